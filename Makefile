@@ -1,0 +1,34 @@
+# Two commands for a fresh Debian 12 machine:
+#   make run    install what is missing, build, start the simulation
+#   make test   install what is missing, build, run every test
+# Debian's ROS Python modules need /usr/bin/python3, so /usr/bin comes first.
+SHELL := /bin/bash
+export PATH := /usr/bin:/bin:/usr/sbin:/sbin:$(PATH)
+JOBS ?= 2
+CATKIN_MAKE := catkin_make --source . --build build \
+	-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3
+
+.PHONY: all setup build run test screenshots bench clean
+
+all: build
+
+setup:
+	@scripts/setup.sh
+
+build: setup
+	@scripts/quiet_build.sh $(CATKIN_MAKE) -j$(JOBS)
+
+run: build
+	@scripts/run.sh
+
+test: build
+	@scripts/run_tests.sh
+
+screenshots: build
+	@scripts/screenshots.sh
+
+bench: build
+	@bench/run_all.sh
+
+clean:
+	rm -rf build devel

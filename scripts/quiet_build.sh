@@ -1,0 +1,14 @@
+#!/bin/bash
+# Runs a build command, showing only progress headlines, warnings and errors;
+# the full output goes to build/build.log. Exits with the command's status and,
+# on failure, shows the log's last lines.
+set -o pipefail
+mkdir -p build
+"$@" 2>&1 | tee build/build.log | grep --line-buffered -E \
+  '(^#### |^-- ~~ +[a-z]|: (error|warning):|^make.*Error|\*\*\*)'
+status=${PIPESTATUS[0]}
+if (( status != 0 )); then
+  echo "build failed (exit $status); last lines of build/build.log:"
+  tail -n 40 build/build.log
+fi
+exit "$status"
