@@ -20,7 +20,7 @@ class ImagesTest(unittest.TestCase):
     def test_load_png_and_count_colour(self):
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, 'half.png')
-            subprocess.run(['convert', '-size', '10x4', 'xc:rgb(255,107,10)',
+            subprocess.run(['/usr/bin/convert', '-size', '10x4', 'xc:rgb(255,107,10)',
                             '-fill', 'rgb(0,0,0)', '-draw', 'rectangle 0,0 4,3', path],
                            check=True)
             image = load_png(path)

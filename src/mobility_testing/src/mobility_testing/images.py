@@ -6,7 +6,7 @@ import numpy as np
 
 def load_png(path):
     """Returns an image file as an (H, W, 3) uint8 RGB array (via ImageMagick's convert)."""
-    out = subprocess.run(['convert', path, '-depth', '8', 'ppm:-'], check=True,
+    out = subprocess.run(['/usr/bin/convert', path, '-depth', '8', 'ppm:-'], check=True,
                          capture_output=True).stdout
     return parse_ppm(out)
 

@@ -83,7 +83,7 @@ def screenshot(window, path):
     """Saves a PNG of a window (or of the whole screen for window='root')."""
     require_display()
     target = 'root' if window == 'root' else str(window)
-    subprocess.run(['import', '-window', target, path], check=True, timeout=30,
+    subprocess.run(['/usr/bin/import', '-window', target, path], check=True, timeout=30,
                    capture_output=True)
     return path
 
