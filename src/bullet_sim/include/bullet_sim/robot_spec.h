@@ -1,0 +1,90 @@
+#ifndef BULLET_SIM_ROBOT_SPEC_H
+#define BULLET_SIM_ROBOT_SPEC_H
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <urdf_model/model.h>
+#include <urdf_world/types.h>
+
+#include "bullet_sim/types.h"
+
+namespace bullet_sim {
+
+/// Gazebo surface parameters of one link (<gazebo reference="link"><mu1>...).
+struct SurfaceParams {
+  double mu1 = 1.0, mu2 = 1.0, kp = 1e12, kd = 1.0;
+};
+
+/// A <sensor type="ray"> (planar lidar) and its libgazebo_ros_laser.so plugin.
+struct RaySpec {
+  std::string name, link, topic = "scan", frame_id;
+  Pose3 pose_in_link;
+  double update_rate_hz = 5, min_angle_rad = 0, max_angle_rad = 0, range_min_m = 0.1,
+         range_max_m = 10, range_resolution_m = 0, noise_mean_m = 0, noise_stddev_m = 0;
+  int samples = 1;
+};
+
+/// An IMU: a <sensor type="imu"> or a libgazebo_ros_imu(_sensor).so plugin.
+struct ImuSpec {
+  std::string name, link, topic = "imu", frame_id;
+  double update_rate_hz = 0, gaussian_noise = 0;
+};
+
+/// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin.
+struct CameraSpec {
+  std::string name, link, camera_name = "camera", image_topic = "image_raw",
+                          info_topic = "camera_info", frame_id;
+  Pose3 pose_in_link;
+  double update_rate_hz = 0, horizontal_fov_rad = 1.047, clip_near_m = 0.1, clip_far_m = 100;
+  int width = 320, height = 240;
+  std::string format = "R8G8B8";
+};
+
+/// Where the diff drive's odometry comes from (<odometrySource>).
+enum class OdomSource { World, Encoder };
+
+/// The libgazebo_ros_diff_drive.so plugin's parameters.
+struct DiffDriveSpec {
+  std::string left_joint, right_joint, command_topic = "cmd_vel", odometry_topic = "odom",
+                                        odometry_frame = "odom",
+                                        robot_base_frame = "base_footprint";
+  double wheel_separation_m = 0.34, wheel_diameter_m = 0.15, wheel_torque_nm = 5,
+         wheel_acceleration = 0, update_rate_hz = 100;
+  OdomSource odometry_source = OdomSource::World;
+  bool publish_odom_tf = true, publish_wheel_tf = false, publish_wheel_joint_state = false;
+};
+
+/// One URDF <visual>, in its link's frame (for the camera renderer).
+struct VisualSpec {
+  std::string link;
+  enum Kind { Box, Cylinder, Sphere, Mesh } kind = Box;
+  Pose3 pose_in_link;
+  Eigen::Vector3d size{0, 0, 0};  ///< box: x y z; cylinder: r r length; sphere: r r r
+  Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+};
+
+/// Everything the simulator needs from a robot description.
+struct RobotSpec {
+  std::string name;
+  urdf::ModelInterfaceSharedPtr urdf;
+  std::map<std::string, SurfaceParams> surfaces;  ///< by link name
+  std::vector<RaySpec> rays;
+  std::vector<ImuSpec> imus;
+  std::vector<CameraSpec> cameras;
+  std::optional<DiffDriveSpec> diff_drive;
+  std::vector<VisualSpec> visuals;
+  /// Unsupported plugins/sensors, links with collision but no inertial, ...
+  std::vector<std::string> warnings;
+};
+
+/// Parses a URDF document with urdfdom plus its Gazebo extension tags.
+/// @param source_name used in error messages ("robot_description" or a path).
+/// @throws LoadError naming the source, element and bad value.
+RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_ROBOT_SPEC_H

@@ -1,0 +1,41 @@
+#ifndef BULLET_SIM_WORLD_SPEC_H
+#define BULLET_SIM_WORLD_SPEC_H
+
+#include <string>
+#include <vector>
+
+#include "bullet_sim/types.h"
+
+namespace bullet_sim {
+
+/// One static collision/visual primitive of the world.
+struct StaticShape {
+  enum Kind { Box, Cylinder, Sphere, Plane } kind = Box;
+  std::string model, link;
+  Pose3 pose;                        ///< world pose of the geometry
+  Eigen::Vector3d size{0, 0, 0};     ///< box: x y z; cylinder: r r length; sphere: r r r;
+                                     ///< plane: size_x size_y 0
+  Eigen::Vector3d normal{0, 0, 1};   ///< plane only, in the geometry frame
+  Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  bool collides = true;              ///< false for visual-only geometry
+};
+
+/// A world read from SDF.
+struct WorldSpec {
+  std::string name;
+  std::vector<StaticShape> shapes;
+  Eigen::Vector3d gravity{0, 0, -9.8};
+  double max_step_size_s = 0.001;
+  Eigen::Vector3d light_direction{-0.5, 0.1, -0.9};
+  Eigen::Vector4f ambient{0.4f, 0.4f, 0.4f, 1.0f};
+  std::vector<std::string> warnings;
+};
+
+/// Loads an SDF world file with libsdformat. @throws LoadError naming the path.
+WorldSpec loadWorldFile(const std::string& path);
+/// Loads an SDF world from a string. @throws LoadError naming source_name.
+WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_WORLD_SPEC_H

@@ -1,0 +1,243 @@
+#include "gazebo_extensions.h"
+
+#include <tinyxml2.h>
+
+#include "bullet_sim/errors.h"
+#include "xml_values.h"
+
+namespace bullet_sim {
+namespace {
+
+using tinyxml2::XMLElement;
+
+std::string attr(const XMLElement* e, const char* name) {
+  const char* v = e->Attribute(name);
+  return v ? v : "";
+}
+
+/// Parses one <gazebo> block's sensors and plugins with shared context.
+class ExtensionReader {
+ public:
+  ExtensionReader(const std::string& source, RobotSpec* spec) : xml_(source), spec_(spec) {}
+
+  void readBlock(const XMLElement* gazebo) {
+    const std::string link = attr(gazebo, "reference");
+    if (!link.empty()) readSurface(gazebo, link);
+    for (const XMLElement* s = gazebo->FirstChildElement("sensor"); s;
+         s = s->NextSiblingElement("sensor")) {
+      readSensor(s, link);
+    }
+    for (const XMLElement* p = gazebo->FirstChildElement("plugin"); p;
+         p = p->NextSiblingElement("plugin")) {
+      readModelPlugin(p);
+    }
+  }
+
+ private:
+  void readSurface(const XMLElement* g, const std::string& link) {
+    const std::string where = "<gazebo reference=\"" + link + "\">";
+    if (!g->FirstChildElement("mu1") && !g->FirstChildElement("mu2") &&
+        !g->FirstChildElement("kp") && !g->FirstChildElement("kd")) {
+      return;
+    }
+    SurfaceParams s = spec_->surfaces[link];
+    s.mu1 = xml_.number(g, "mu1", s.mu1, where);
+    s.mu2 = xml_.number(g, "mu2", s.mu2, where);
+    s.kp = xml_.number(g, "kp", s.kp, where);
+    s.kd = xml_.number(g, "kd", s.kd, where);
+    if (s.mu1 < 0 || s.mu2 < 0) xml_.fail(where, "friction mu1/mu2 must not be negative");
+    spec_->surfaces[link] = s;
+  }
+
+  void readSensor(const XMLElement* s, const std::string& link) {
+    const std::string type = attr(s, "type");
+    const std::string name = attr(s, "name");
+    const std::string where = "<gazebo reference=\"" + link + "\"> <sensor name=\"" + name + "\">";
+    if (link.empty()) xml_.fail(where, "a sensor needs a <gazebo reference=\"link\">");
+    const XMLElement* plugin = s->FirstChildElement("plugin");
+    const std::string file = plugin ? attr(plugin, "filename") : "";
+    if (type == "ray" || type == "gpu_ray") {
+      if (file != "libgazebo_ros_laser.so" && file != "libgazebo_ros_gpu_laser.so") {
+        return noPlugin(type, name, link, file);
+      }
+      readRay(s, plugin, link, name, where);
+    } else if (type == "imu") {
+      if (file != "libgazebo_ros_imu_sensor.so") return noPlugin(type, name, link, file);
+      ImuSpec imu;
+      imu.name = name;
+      imu.link = link;
+      imu.update_rate_hz = xml_.number(s, "update_rate", 0, where);
+      const std::string pw = where + " <plugin>";
+      imu.topic = xml_.text(plugin, "topicName", imu.topic);
+      imu.frame_id = xml_.text(plugin, "frameName", link);
+      imu.update_rate_hz = xml_.number(plugin, "updateRateHZ", imu.update_rate_hz, pw);
+      imu.gaussian_noise = xml_.number(plugin, "gaussianNoise", 0, pw);
+      spec_->imus.push_back(imu);
+    } else if (type == "camera") {
+      if (file != "libgazebo_ros_camera.so") return noPlugin(type, name, link, file);
+      readCamera(s, plugin, link, name, where);
+    } else {
+      spec_->warnings.push_back("sensor type '" + type + "' (sensor '" + name + "' on link '" +
+                                link + "') is not supported: ignored");
+    }
+  }
+
+  void noPlugin(const std::string& type, const std::string& name, const std::string& link,
+                const std::string& file) {
+    if (file.empty()) {
+      spec_->warnings.push_back(type + " sensor '" + name + "' on link '" + link +
+                                "' has no ROS plugin: nothing is published for it");
+    } else {
+      spec_->warnings.push_back("plugin '" + file + "' in " + type + " sensor '" + name +
+                                "' on link '" + link + "' is not supported: ignored");
+    }
+  }
+
+  void readRay(const XMLElement* s, const XMLElement* plugin, const std::string& link,
+               const std::string& name, const std::string& where) {
+    RaySpec r;
+    r.name = name;
+    r.link = link;
+    r.pose_in_link = xml_.pose(s, "pose", where);
+    r.update_rate_hz = xml_.number(s, "update_rate", r.update_rate_hz, where);
+    const XMLElement* ray = s->FirstChildElement("ray");
+    const XMLElement* scan = ray ? ray->FirstChildElement("scan") : nullptr;
+    const XMLElement* hor = scan ? scan->FirstChildElement("horizontal") : nullptr;
+    const XMLElement* range = ray ? ray->FirstChildElement("range") : nullptr;
+    if (!hor || !range) xml_.fail(where, "needs <ray><scan><horizontal> and <ray><range>");
+    const std::string hw = where + " <horizontal>";
+    const double samples = xml_.number(hor, "samples", 1, hw);
+    if (samples < 1 || samples != static_cast<int>(samples)) {
+      xml_.fail(hw + " <samples>", "'" + xml_.text(hor, "samples", "") + "' is not a count >= 1");
+    }
+    r.samples = static_cast<int>(samples);
+    r.min_angle_rad = xml_.number(hor, "min_angle", 0, hw);
+    r.max_angle_rad = xml_.number(hor, "max_angle", 0, hw);
+    const std::string rw = where + " <range>";
+    r.range_min_m = xml_.number(range, "min", r.range_min_m, rw);
+    r.range_max_m = xml_.number(range, "max", r.range_max_m, rw);
+    r.range_resolution_m = xml_.number(range, "resolution", 0, rw);
+    if (!(r.range_min_m >= 0 && r.range_min_m < r.range_max_m)) {
+      xml_.fail(rw, "min " + xml_.text(range, "min", "") + " must be >= 0 and below max " +
+                        xml_.text(range, "max", ""));
+    }
+    if (const XMLElement* noise = ray->FirstChildElement("noise")) {
+      r.noise_mean_m = xml_.number(noise, "mean", 0, where + " <noise>");
+      r.noise_stddev_m = xml_.number(noise, "stddev", 0, where + " <noise>");
+    }
+    r.topic = xml_.text(plugin, "topicName", r.topic);
+    r.frame_id = xml_.text(plugin, "frameName", link);
+    spec_->rays.push_back(r);
+  }
+
+  void readCamera(const XMLElement* s, const XMLElement* plugin, const std::string& link,
+                  const std::string& name, const std::string& where) {
+    CameraSpec c;
+    c.name = name;
+    c.link = link;
+    c.pose_in_link = xml_.pose(s, "pose", where);
+    c.update_rate_hz = xml_.number(s, "update_rate", 0, where);
+    const XMLElement* cam = s->FirstChildElement("camera");
+    if (!cam) xml_.fail(where, "needs a <camera> element");
+    const std::string cw = where + " <camera>";
+    c.horizontal_fov_rad = xml_.number(cam, "horizontal_fov", c.horizontal_fov_rad, cw);
+    if (const XMLElement* image = cam->FirstChildElement("image")) {
+      c.width = static_cast<int>(xml_.number(image, "width", c.width, cw + " <image>"));
+      c.height = static_cast<int>(xml_.number(image, "height", c.height, cw + " <image>"));
+      c.format = xml_.text(image, "format", c.format);
+    }
+    if (const XMLElement* clip = cam->FirstChildElement("clip")) {
+      c.clip_near_m = xml_.number(clip, "near", c.clip_near_m, cw + " <clip>");
+      c.clip_far_m = xml_.number(clip, "far", c.clip_far_m, cw + " <clip>");
+    }
+    if (c.width < 1 || c.height < 1) xml_.fail(cw + " <image>", "width and height must be >= 1");
+    const std::string pw = where + " <plugin>";
+    c.camera_name = xml_.text(plugin, "cameraName", c.camera_name);
+    c.image_topic = xml_.text(plugin, "imageTopicName", c.image_topic);
+    c.info_topic = xml_.text(plugin, "cameraInfoTopicName", c.info_topic);
+    c.frame_id = xml_.text(plugin, "frameName", link);
+    const double plugin_rate = xml_.number(plugin, "updateRate", 0, pw);
+    if (plugin_rate > 0) c.update_rate_hz = plugin_rate;
+    spec_->cameras.push_back(c);
+  }
+
+  void readModelPlugin(const XMLElement* p) {
+    const std::string file = attr(p, "filename");
+    const std::string where = "<plugin name=\"" + attr(p, "name") + "\" filename=\"" + file + "\">";
+    if (file == "libgazebo_ros_diff_drive.so") {
+      readDiffDrive(p, where);
+    } else if (file == "libgazebo_ros_imu.so") {
+      ImuSpec imu;
+      imu.name = attr(p, "name");
+      imu.link = xml_.text(p, "bodyName", "");
+      if (imu.link.empty()) xml_.fail(where, "<bodyName> is missing");
+      imu.topic = xml_.text(p, "topicName", imu.topic);
+      imu.frame_id = xml_.text(p, "frameName", imu.link);
+      imu.update_rate_hz = xml_.number(p, "updateRate", 0, where);
+      imu.gaussian_noise = xml_.number(p, "gaussianNoise", 0, where);
+      spec_->imus.push_back(imu);
+    } else {
+      spec_->warnings.push_back("plugin '" + file + "' (name '" + attr(p, "name") +
+                                "') is not supported: ignored");
+    }
+  }
+
+  void readDiffDrive(const XMLElement* p, const std::string& where) {
+    if (spec_->diff_drive) xml_.fail(where, "a second libgazebo_ros_diff_drive.so plugin");
+    DiffDriveSpec d;
+    d.left_joint = xml_.text(p, "leftJoint", "");
+    d.right_joint = xml_.text(p, "rightJoint", "");
+    if (d.left_joint.empty() || d.right_joint.empty()) {
+      xml_.fail(where, "<leftJoint> and <rightJoint> are required");
+    }
+    d.command_topic = xml_.text(p, "commandTopic", d.command_topic);
+    d.odometry_topic = xml_.text(p, "odometryTopic", d.odometry_topic);
+    d.odometry_frame = xml_.text(p, "odometryFrame", d.odometry_frame);
+    d.robot_base_frame = xml_.text(p, "robotBaseFrame", d.robot_base_frame);
+    d.wheel_separation_m = xml_.number(p, "wheelSeparation", d.wheel_separation_m, where);
+    d.wheel_diameter_m = xml_.number(p, "wheelDiameter", d.wheel_diameter_m, where);
+    d.wheel_torque_nm = xml_.number(p, "wheelTorque", d.wheel_torque_nm, where);
+    d.wheel_acceleration = xml_.number(p, "wheelAcceleration", d.wheel_acceleration, where);
+    d.update_rate_hz = xml_.number(p, "updateRate", d.update_rate_hz, where);
+    const std::string source = xml_.text(p, "odometrySource", "world");
+    if (source == "world" || source == "1") {
+      d.odometry_source = OdomSource::World;
+    } else if (source == "encoder" || source == "0") {
+      d.odometry_source = OdomSource::Encoder;
+    } else {
+      xml_.fail(where + " <odometrySource>", "'" + source + "' is not 'world' or 'encoder'");
+    }
+    d.publish_odom_tf = xml_.boolean(p, "publishOdomTF", d.publish_odom_tf, where);
+    d.publish_wheel_tf = xml_.boolean(p, "publishWheelTF", d.publish_wheel_tf, where);
+    d.publish_wheel_joint_state =
+        xml_.boolean(p, "publishWheelJointState", d.publish_wheel_joint_state, where);
+    if (d.wheel_separation_m <= 0) xml_.fail(where + " <wheelSeparation>", "must be > 0");
+    if (d.wheel_diameter_m <= 0) xml_.fail(where + " <wheelDiameter>", "must be > 0");
+    if (d.wheel_torque_nm <= 0) xml_.fail(where + " <wheelTorque>", "must be > 0");
+    if (d.wheel_acceleration < 0) xml_.fail(where + " <wheelAcceleration>", "must be >= 0");
+    if (d.update_rate_hz < 0) xml_.fail(where + " <updateRate>", "must be >= 0");
+    spec_->diff_drive = d;
+  }
+
+  XmlValues xml_;
+  RobotSpec* spec_;
+};
+
+}  // namespace
+
+void parseGazeboExtensions(const std::string& urdf_xml, const std::string& source,
+                           RobotSpec* spec) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(urdf_xml.c_str()) != tinyxml2::XML_SUCCESS) {
+    throw LoadError(source + ": malformed XML: " + doc.ErrorStr());
+  }
+  const XMLElement* robot = doc.FirstChildElement("robot");
+  if (!robot) throw LoadError(source + ": no <robot> element");
+  ExtensionReader reader(source, spec);
+  for (const XMLElement* g = robot->FirstChildElement("gazebo"); g;
+       g = g->NextSiblingElement("gazebo")) {
+    reader.readBlock(g);
+  }
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,18 @@
+#ifndef BULLET_SIM_CORE_GAZEBO_EXTENSIONS_H
+#define BULLET_SIM_CORE_GAZEBO_EXTENSIONS_H
+
+#include <string>
+
+#include "bullet_sim/robot_spec.h"
+
+namespace bullet_sim {
+
+/// Reads the <gazebo> extension tags of a URDF document (surfaces, sensors,
+/// plugins) into `spec`; unsupported sensors and plugins become warnings.
+/// @throws LoadError on malformed values.
+void parseGazeboExtensions(const std::string& urdf_xml, const std::string& source,
+                           RobotSpec* spec);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_GAZEBO_EXTENSIONS_H

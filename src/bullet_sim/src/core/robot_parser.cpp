@@ -1,0 +1,108 @@
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include "bullet_sim/errors.h"
+#include "bullet_sim/robot_spec.h"
+#include "gazebo_extensions.h"
+
+namespace bullet_sim {
+namespace {
+
+/// Collects urdfdom's console_bridge errors while it parses, so that the
+/// LoadError can carry the parser's own reason.
+class CapturedLog : public console_bridge::OutputHandler {
+ public:
+  CapturedLog() { console_bridge::useOutputHandler(this); }
+  ~CapturedLog() override { console_bridge::restorePreviousOutputHandler(); }
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) {
+      errors_ += (errors_.empty() ? "" : "; ") + text;
+    }
+  }
+  const std::string& errors() const { return errors_; }
+
+ private:
+  std::string errors_;
+};
+
+Pose3 toPose(const urdf::Pose& p) {
+  Pose3 out;
+  out.position = Eigen::Vector3d(p.position.x, p.position.y, p.position.z);
+  out.orientation = Eigen::Quaterniond(p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z);
+  return out;
+}
+
+void addVisuals(const urdf::Link& link, RobotSpec* spec) {
+  for (const urdf::VisualSharedPtr& v : link.visual_array) {
+    if (!v || !v->geometry) continue;
+    VisualSpec vis;
+    vis.link = link.name;
+    vis.pose_in_link = toPose(v->origin);
+    switch (v->geometry->type) {
+      case urdf::Geometry::BOX: {
+        const auto& b = static_cast<const urdf::Box&>(*v->geometry);
+        vis.kind = VisualSpec::Box;
+        vis.size = Eigen::Vector3d(b.dim.x, b.dim.y, b.dim.z);
+        break;
+      }
+      case urdf::Geometry::CYLINDER: {
+        const auto& c = static_cast<const urdf::Cylinder&>(*v->geometry);
+        vis.kind = VisualSpec::Cylinder;
+        vis.size = Eigen::Vector3d(c.radius, c.radius, c.length);
+        break;
+      }
+      case urdf::Geometry::SPHERE: {
+        const auto& s = static_cast<const urdf::Sphere&>(*v->geometry);
+        vis.kind = VisualSpec::Sphere;
+        vis.size = Eigen::Vector3d(s.radius, s.radius, s.radius);
+        break;
+      }
+      default: {
+        const auto& m = static_cast<const urdf::Mesh&>(*v->geometry);
+        vis.kind = VisualSpec::Mesh;
+        vis.size = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
+        break;
+      }
+    }
+    if (v->material) {
+      const urdf::Color& c = v->material->color;
+      vis.rgba = Eigen::Vector4f(c.r, c.g, c.b, c.a);
+    }
+    spec->visuals.push_back(vis);
+  }
+}
+
+}  // namespace
+
+RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name) {
+  RobotSpec spec;
+  {
+    CapturedLog log;
+    spec.urdf = urdf::parseURDF(urdf_xml);
+    if (!spec.urdf) {
+      throw LoadError(source_name + ": invalid URDF: " +
+                      (log.errors().empty() ? "urdfdom could not parse it" : log.errors()));
+    }
+  }
+  spec.name = spec.urdf->getName();
+  std::vector<urdf::LinkSharedPtr> links;
+  spec.urdf->getLinks(links);
+  for (const urdf::LinkSharedPtr& link : links) {
+    if (!link->collision_array.empty() && !link->inertial) {
+      spec.warnings.push_back("link '" + link->name +
+                              "' has <collision> but no <inertial>: it is given no mass "
+                              "(Gazebo would drop it)");
+    }
+    addVisuals(*link, &spec);
+  }
+  parseGazeboExtensions(urdf_xml, source_name, &spec);
+  for (const auto& surface : spec.surfaces) {
+    if (!spec.urdf->getLink(surface.first)) {
+      spec.warnings.push_back("<gazebo reference=\"" + surface.first +
+                              "\"> names no link: its surface parameters are ignored");
+    }
+  }
+  return spec;
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,194 @@
+#include <fstream>
+#include <sstream>
+
+#include <sdf/sdf.hh>
+
+#include "bullet_sim/errors.h"
+#include "bullet_sim/world_spec.h"
+
+namespace bullet_sim {
+namespace {
+
+using ignition::math::Pose3d;
+
+Pose3 toPose(const Pose3d& p) {
+  Pose3 out;
+  out.position = Eigen::Vector3d(p.Pos().X(), p.Pos().Y(), p.Pos().Z());
+  out.orientation = Eigen::Quaterniond(p.Rot().W(), p.Rot().X(), p.Rot().Y(), p.Rot().Z());
+  return out;
+}
+
+/// Pose of an element in its parent's frame (relative_to honoured when it resolves).
+template <typename T>
+Pose3d poseInParent(const T& element) {
+  Pose3d pose;
+  if (!element.SemanticPose().Resolve(pose).empty()) pose = element.RawPose();
+  return pose;
+}
+
+std::string geometryName(sdf::GeometryType type) {
+  switch (type) {
+    case sdf::GeometryType::EMPTY: return "empty";
+    case sdf::GeometryType::BOX: return "box";
+    case sdf::GeometryType::CYLINDER: return "cylinder";
+    case sdf::GeometryType::PLANE: return "plane";
+    case sdf::GeometryType::SPHERE: return "sphere";
+    case sdf::GeometryType::MESH: return "mesh";
+    case sdf::GeometryType::HEIGHTMAP: return "heightmap";
+    case sdf::GeometryType::CAPSULE: return "capsule";
+    case sdf::GeometryType::ELLIPSOID: return "ellipsoid";
+    default: return "polyline";
+  }
+}
+
+/// Builds the StaticShapes of one world and records where they came from.
+class WorldReader {
+ public:
+  explicit WorldReader(std::string source) : source_(std::move(source)) {}
+
+  WorldSpec read(const sdf::Root& root) {
+    if (root.WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
+    const sdf::World& world = *root.WorldByIndex(0);
+    WorldSpec spec;
+    spec.name = world.Name();
+    const auto g = world.Gravity();
+    spec.gravity = Eigen::Vector3d(g.X(), g.Y(), g.Z());
+    if (world.PhysicsCount() > 0) {
+      spec.max_step_size_s = world.PhysicsByIndex(0)->MaxStepSize();
+      if (!(spec.max_step_size_s > 0)) {
+        throw LoadError(source_ + ": <physics> <max_step_size>: must be > 0");
+      }
+    }
+    if (const sdf::Scene* scene = world.Scene()) {
+      const auto a = scene->Ambient();
+      spec.ambient = Eigen::Vector4f(a.R(), a.G(), a.B(), a.A());
+    }
+    for (uint64_t i = 0; i < world.LightCount(); ++i) {
+      const sdf::Light& light = *world.LightByIndex(i);
+      if (light.Type() == sdf::LightType::DIRECTIONAL) {
+        const auto d = toPose(poseInParent(light)).orientation *
+                       Eigen::Vector3d(light.Direction().X(), light.Direction().Y(),
+                                       light.Direction().Z());
+        spec.light_direction = d.normalized();
+        break;
+      }
+    }
+    for (uint64_t i = 0; i < world.ModelCount(); ++i) {
+      readModel(*world.ModelByIndex(i), Pose3d::Zero, &spec);
+    }
+    return spec;
+  }
+
+ private:
+  void readModel(const sdf::Model& model, const Pose3d& parent_in_world, WorldSpec* spec) {
+    const Pose3d model_in_world = poseInParent(model) + parent_in_world;
+    if (!model.Static()) {
+      spec->warnings.push_back(source_ + ": model '" + model.Name() +
+                               "' is not static: it is simulated as a static model");
+    }
+    for (uint64_t l = 0; l < model.LinkCount(); ++l) {
+      const sdf::Link& link = *model.LinkByIndex(l);
+      const Pose3d link_in_world = poseInParent(link) + model_in_world;
+      for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
+        const sdf::Collision& col = *link.CollisionByIndex(c);
+        spec->shapes.push_back(
+            shape(model, link, *col.Geom(), poseInParent(col) + link_in_world, true));
+      }
+      for (uint64_t v = 0; v < link.VisualCount(); ++v) {
+        const sdf::Visual& vis = *link.VisualByIndex(v);
+        StaticShape s = shape(model, link, *vis.Geom(), poseInParent(vis) + link_in_world, false);
+        if (vis.Material()) {
+          const auto c = vis.Material()->Diffuse();
+          s.rgba = Eigen::Vector4f(c.R(), c.G(), c.B(), c.A());
+        }
+        mergeVisual(s, spec);
+      }
+    }
+    for (uint64_t m = 0; m < model.ModelCount(); ++m) {
+      readModel(*model.ModelByIndex(m), model_in_world, spec);
+    }
+  }
+
+  /// A visual equal to a collision shape of the same link colours it instead
+  /// of adding a second, visual-only shape.
+  static void mergeVisual(const StaticShape& visual, WorldSpec* spec) {
+    for (StaticShape& s : spec->shapes) {
+      if (s.collides && s.model == visual.model && s.link == visual.link &&
+          s.kind == visual.kind && s.size.isApprox(visual.size, 1e-9) &&
+          (s.pose.position - visual.pose.position).norm() < 1e-9 &&
+          s.pose.orientation.angularDistance(visual.pose.orientation) < 1e-9) {
+        s.rgba = visual.rgba;
+        return;
+      }
+    }
+    spec->shapes.push_back(visual);
+  }
+
+  StaticShape shape(const sdf::Model& model, const sdf::Link& link, const sdf::Geometry& geom,
+                    const Pose3d& pose, bool collides) const {
+    StaticShape s;
+    s.model = model.Name();
+    s.link = link.Name();
+    s.pose = toPose(pose);
+    s.collides = collides;
+    switch (geom.Type()) {
+      case sdf::GeometryType::BOX: {
+        const auto size = geom.BoxShape()->Size();
+        s.kind = StaticShape::Box;
+        s.size = Eigen::Vector3d(size.X(), size.Y(), size.Z());
+        break;
+      }
+      case sdf::GeometryType::CYLINDER:
+        s.kind = StaticShape::Cylinder;
+        s.size = Eigen::Vector3d(geom.CylinderShape()->Radius(), geom.CylinderShape()->Radius(),
+                                 geom.CylinderShape()->Length());
+        break;
+      case sdf::GeometryType::SPHERE:
+        s.kind = StaticShape::Sphere;
+        s.size = Eigen::Vector3d::Constant(geom.SphereShape()->Radius());
+        break;
+      case sdf::GeometryType::PLANE: {
+        const auto n = geom.PlaneShape()->Normal();
+        s.kind = StaticShape::Plane;
+        s.size = Eigen::Vector3d(geom.PlaneShape()->Size().X(), geom.PlaneShape()->Size().Y(), 0);
+        s.normal = Eigen::Vector3d(n.X(), n.Y(), n.Z()).normalized();
+        break;
+      }
+      default:
+        throw LoadError(source_ + ": model '" + model.Name() + "' link '" + link.Name() + "' " +
+                        (collides ? "collision" : "visual") + ": geometry type '" +
+                        geometryName(geom.Type()) +
+                        "' is not supported (box, cylinder, sphere, plane are)");
+    }
+    return s;
+  }
+
+  std::string source_;
+};
+
+std::string describe(const sdf::Errors& errors) {
+  std::ostringstream out;
+  for (size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i].Message();
+  return out.str();
+}
+
+}  // namespace
+
+WorldSpec loadWorldFile(const std::string& path) {
+  if (!std::ifstream(path).good()) {
+    throw LoadError(path + ": world file does not exist or cannot be read");
+  }
+  sdf::Root root;
+  const sdf::Errors errors = root.Load(path);
+  if (!errors.empty()) throw LoadError(path + ": invalid SDF world: " + describe(errors));
+  return WorldReader(path).read(root);
+}
+
+WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name) {
+  sdf::Root root;
+  const sdf::Errors errors = root.LoadSdfString(sdf_xml);
+  if (!errors.empty()) throw LoadError(source_name + ": invalid SDF world: " + describe(errors));
+  return WorldReader(source_name).read(root);
+}
+
+}  // namespace bullet_sim
