@@ -1,0 +1,51 @@
+/// @file renderer.h
+/// @brief Z-buffered CPU rasterizer that renders a Scene through a CameraModel.
+#pragma once
+
+#include "sim_render/camera_model.h"
+#include "sim_render/scene.h"
+
+#include <Eigen/Geometry>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sim_render {
+
+/// Counters of the last frame, for tests and benchmarks.
+struct RenderStats {
+  std::size_t shapes_drawn = 0;     ///< shapes not rejected by the frustum test
+  std::size_t triangles_drawn = 0;  ///< triangles that reached the rasterizer
+  std::size_t triangles_clipped = 0;  ///< of those, cut by the near plane
+};
+
+/// Renders scenes with one camera model. Holds its depth buffer and scratch space, so a
+/// frame allocates nothing once the output vector has its size. Deterministic: the same
+/// scene and pose give the same bytes. Not thread-safe; use one Renderer per thread.
+class Renderer {
+ public:
+  /// Validates the camera (std::invalid_argument naming the bad value).
+  explicit Renderer(const CameraModel& camera);
+
+  const CameraModel& camera() const { return camera_; }
+
+  /// Draws `scene` seen from a camera at `T_world_camera` (Gazebo convention, see
+  /// CameraModel) into `out_rgb8`, resized to width * height * 3, row-major, row 0 on top.
+  void render(const Scene& scene, const Eigen::Isometry3d& T_world_camera,
+              std::vector<std::uint8_t>& out_rgb8);
+
+  /// Depth along the camera's +x axis at pixel (col, row) of the last frame, in metres;
+  /// +infinity where nothing was drawn or out of the image.
+  double depthAt(int col, int row) const;
+
+  const RenderStats& lastStats() const { return stats_; }
+
+ private:
+  CameraModel camera_;
+  std::vector<float> inverse_depth_;
+  std::vector<Eigen::Vector3d> camera_vertices_;
+  RenderStats stats_;
+};
+
+}  // namespace sim_render

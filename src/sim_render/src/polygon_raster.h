@@ -1,0 +1,49 @@
+// Internal: near-plane clipping and scanline rasterization of one camera-frame triangle.
+#pragma once
+
+#include "sim_render/camera_model.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+
+namespace sim_render {
+namespace detail {
+
+/// Colour and inverse-depth buffers of one frame, row-major, row 0 on top.
+struct RasterTarget {
+  int width = 0;
+  int height = 0;
+  float* inverse_depth = nullptr;  ///< 1 / depth, 0 = empty
+  std::uint8_t* rgb8 = nullptr;
+};
+
+enum class RasterResult { Culled, Drawn, DrawnClipped };
+
+/// Draws triangles given in the camera frame (Gazebo convention) with one flat colour.
+/// Depth is tested and stored as 1 / x (x = distance along the optical axis), which is an
+/// affine function of the pixel coordinates over a planar polygon, hence perspective-correct.
+/// Pixels are owned by exactly one of two triangles sharing an edge (consistent tie rule).
+class PolygonRasterizer {
+ public:
+  explicit PolygonRasterizer(const CameraModel& camera);
+
+  /// `normal` is the triangle's outward unit normal in the camera frame; back faces (and
+  /// faces seen edge-on) are culled.
+  RasterResult draw(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                    const Eigen::Vector3d& normal, const std::uint8_t rgb[3],
+                    const RasterTarget& target) const;
+
+ private:
+  static constexpr int kMaxVertices = 4;  // a triangle cut by one plane
+
+  void fill(const Eigen::Vector2d* screen, int count, const Eigen::Vector3d& inverse_depth_plane,
+            const std::uint8_t rgb[3], const RasterTarget& target) const;
+
+  double fx_, fy_, cx_, cy_;
+  double near_m_, far_m_;
+  float inverse_far_;
+};
+
+}  // namespace detail
+}  // namespace sim_render

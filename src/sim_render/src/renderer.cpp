@@ -1,0 +1,116 @@
+#include "sim_render/renderer.h"
+
+#include "polygon_raster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sim_render {
+namespace {
+
+// Inward unit normals of the four side planes of the view frustum (camera frame).
+struct Frustum {
+  double near_m, far_m;
+  Eigen::Vector3d sides[4];
+};
+
+Frustum makeFrustum(const CameraModel& camera) {
+  const double tan_h = camera.cx() / camera.fx();
+  const double tan_v = camera.cy() / camera.fy();
+  Frustum f;
+  f.near_m = camera.clip_near_m;
+  f.far_m = camera.clip_far_m;
+  f.sides[0] = Eigen::Vector3d(tan_h, -1, 0).normalized();  // left edge:   y <= x tan_h
+  f.sides[1] = Eigen::Vector3d(tan_h, 1, 0).normalized();   // right edge:  y >= -x tan_h
+  f.sides[2] = Eigen::Vector3d(tan_v, 0, -1).normalized();  // top edge:    z <= x tan_v
+  f.sides[3] = Eigen::Vector3d(tan_v, 0, 1).normalized();   // bottom edge: z >= -x tan_v
+  return f;
+}
+
+bool sphereOutside(const Frustum& f, const Eigen::Vector3d& centre, double radius) {
+  if (centre.x() + radius < f.near_m || centre.x() - radius > f.far_m) return true;
+  for (const Eigen::Vector3d& side : f.sides) {
+    if (side.dot(centre) < -radius) return true;
+  }
+  return false;
+}
+
+bool triangleOutside(const Frustum& f, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                     const Eigen::Vector3d& c) {
+  for (const Eigen::Vector3d& side : f.sides) {
+    if (side.dot(a) < 0 && side.dot(b) < 0 && side.dot(c) < 0) return true;
+  }
+  return false;
+}
+
+std::uint8_t toByte(float value) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
+}
+
+}  // namespace
+
+Renderer::Renderer(const CameraModel& camera) : camera_(camera) {
+  camera_.validate();
+  inverse_depth_.assign(static_cast<std::size_t>(camera_.width) * camera_.height, 0.0f);
+}
+
+void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camera,
+                      std::vector<std::uint8_t>& out_rgb8) {
+  const std::size_t pixels = static_cast<std::size_t>(camera_.width) * camera_.height;
+  out_rgb8.resize(pixels * 3);
+  std::fill(inverse_depth_.begin(), inverse_depth_.end(), 0.0f);
+  const Lighting& lighting = scene.lighting();
+  const std::uint8_t sky[3] = {toByte(lighting.background.x()), toByte(lighting.background.y()),
+                               toByte(lighting.background.z())};
+  for (std::size_t i = 0; i < pixels; ++i) std::copy(sky, sky + 3, &out_rgb8[3 * i]);
+
+  stats_ = RenderStats();
+  const detail::PolygonRasterizer rasterizer(camera_);
+  const detail::RasterTarget target{camera_.width, camera_.height, inverse_depth_.data(), out_rgb8.data()};
+  const Frustum frustum = makeFrustum(camera_);
+  const Eigen::Isometry3d T_camera_world = T_world_camera.inverse();
+  const double light_norm = lighting.direction.norm();
+  const Eigen::Vector3d to_light =
+      light_norm > 0 ? Eigen::Vector3d(-lighting.direction / light_norm) : Eigen::Vector3d::Zero();
+
+  for (const SceneShape& shape : scene.shapes()) {
+    const Eigen::Isometry3d T_camera_shape = T_camera_world * shape.T_world_shape;
+    if (sphereOutside(frustum, T_camera_shape.translation(), shape.mesh.bounding_radius_m)) continue;
+    ++stats_.shapes_drawn;
+
+    const Mesh& mesh = shape.mesh;
+    camera_vertices_.resize(mesh.vertices.size());
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) camera_vertices_[i] = T_camera_shape * mesh.vertices[i];
+    const Eigen::Matrix3d R_camera_shape = T_camera_shape.linear();
+    const Eigen::Matrix3d R_world_shape = shape.T_world_shape.linear();
+    const Eigen::Vector3f colour = shape.spec.rgba.head<3>();
+
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      const auto& tri = mesh.triangles[t];
+      const Eigen::Vector3d& a = camera_vertices_[tri[0]];
+      const Eigen::Vector3d& b = camera_vertices_[tri[1]];
+      const Eigen::Vector3d& c = camera_vertices_[tri[2]];
+      const Eigen::Vector3d normal = R_camera_shape * mesh.face_normals[t];
+      if (normal.dot(a) >= 0.0 || triangleOutside(frustum, a, b, c)) continue;
+
+      const double lambert = std::max(0.0, (R_world_shape * mesh.face_normals[t]).dot(to_light));
+      const Eigen::Vector3f light = lighting.ambient + lighting.diffuse * static_cast<float>(lambert);
+      const std::uint8_t rgb[3] = {toByte(colour.x() * light.x()), toByte(colour.y() * light.y()),
+                                   toByte(colour.z() * light.z())};
+      const detail::RasterResult result = rasterizer.draw(a, b, c, normal, rgb, target);
+      if (result != detail::RasterResult::Culled) ++stats_.triangles_drawn;
+      if (result == detail::RasterResult::DrawnClipped) ++stats_.triangles_clipped;
+    }
+  }
+}
+
+double Renderer::depthAt(int col, int row) const {
+  if (col < 0 || row < 0 || col >= camera_.width || row >= camera_.height) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const float inverse_depth = inverse_depth_[static_cast<std::size_t>(row) * camera_.width + col];
+  return inverse_depth > 0.0f ? 1.0 / inverse_depth : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace sim_render

@@ -1,0 +1,185 @@
+#include "sim_render/tessellation.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace sim_render {
+namespace {
+
+const char* kindName(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::Box: return "box";
+    case ShapeKind::Cylinder: return "cylinder";
+    case ShapeKind::Sphere: return "sphere";
+    case ShapeKind::Plane: return "plane";
+  }
+  return "unknown";
+}
+
+void requirePositive(ShapeKind kind, const char* what, double value) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    std::ostringstream msg;
+    msg << kindName(kind) << " " << what << " must be finite and > 0, got " << value;
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+void requireAtLeast(const char* what, int value, int minimum) {
+  if (value < minimum) {
+    throw std::invalid_argument(std::string("tessellation ") + what + " must be >= " +
+                                std::to_string(minimum) + ", got " + std::to_string(value));
+  }
+}
+
+// Appends the triangle p, q, r (counter-clockwise seen from outside); degenerate ones are
+// dropped so that every stored normal is a unit vector.
+void addTriangle(Mesh& mesh, const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r) {
+  const Eigen::Vector3d n = (q - p).cross(r - p);
+  const double norm = n.norm();
+  if (norm < 1e-15) return;
+  const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
+  mesh.vertices.push_back(p);
+  mesh.vertices.push_back(q);
+  mesh.vertices.push_back(r);
+  mesh.triangles.push_back({base, base + 1, base + 2});
+  mesh.face_normals.push_back(n / norm);
+}
+
+void addQuad(Mesh& mesh, const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
+             const Eigen::Vector3d& p3) {
+  addTriangle(mesh, p0, p1, p2);
+  addTriangle(mesh, p0, p2, p3);
+}
+
+void buildBox(Mesh& mesh, const Eigen::Vector3d& size) {
+  const Eigen::Vector3d h = 0.5 * size;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double sign : {-1.0, 1.0}) {
+      Eigen::Vector3d n = Eigen::Vector3d::Zero();
+      n[axis] = sign;
+      // u x v = n keeps the quad counter-clockwise seen from outside.
+      Eigen::Vector3d u = Eigen::Vector3d::Zero();
+      u[(axis + 1) % 3] = h[(axis + 1) % 3];
+      const Eigen::Vector3d v = n.cross(u).normalized() * h[(axis + 2) % 3];
+      const Eigen::Vector3d c = n * h[axis];
+      addQuad(mesh, c - u - v, c + u - v, c + u + v, c - u + v);
+    }
+  }
+}
+
+void buildCylinder(Mesh& mesh, double radius, double length, int segments) {
+  const double half = 0.5 * length;
+  const Eigen::Vector3d top(0, 0, half), bottom(0, 0, -half);
+  for (int k = 0; k < segments; ++k) {
+    const double a0 = 2.0 * M_PI * k / segments, a1 = 2.0 * M_PI * (k + 1) / segments;
+    const Eigen::Vector3d r0(radius * std::cos(a0), radius * std::sin(a0), 0);
+    const Eigen::Vector3d r1(radius * std::cos(a1), radius * std::sin(a1), 0);
+    addQuad(mesh, r0 + bottom, r1 + bottom, r1 + top, r0 + top);
+    addTriangle(mesh, top, r0 + top, r1 + top);
+    addTriangle(mesh, bottom, r1 + bottom, r0 + bottom);
+  }
+}
+
+void buildSphere(Mesh& mesh, double radius, int rings, int segments) {
+  auto point = [&](int ring, int segment) {
+    const double theta = M_PI * ring / rings, phi = 2.0 * M_PI * segment / segments;
+    return Eigen::Vector3d(radius * std::sin(theta) * std::cos(phi),
+                           radius * std::sin(theta) * std::sin(phi), radius * std::cos(theta));
+  };
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      addQuad(mesh, point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1));
+    }
+  }
+}
+
+void buildPlane(Mesh& mesh, const ShapeSpec& spec, const TessellationOptions& options) {
+  const bool infinite = spec.size.x() == 0.0 && spec.size.y() == 0.0;
+  if (!infinite) {
+    requirePositive(ShapeKind::Plane, "size x", spec.size.x());
+    requirePositive(ShapeKind::Plane, "size y", spec.size.y());
+  }
+  const double n_norm = spec.normal.norm();
+  if (!(std::isfinite(n_norm) && n_norm > 1e-12)) {
+    std::ostringstream msg;
+    msg << "plane normal must be a finite non-zero vector, got " << spec.normal.transpose();
+    throw std::invalid_argument(msg.str());
+  }
+  const double hx = infinite ? options.infinite_plane_half_extent_m : 0.5 * spec.size.x();
+  const double hy = infinite ? options.infinite_plane_half_extent_m : 0.5 * spec.size.y();
+  const Eigen::Quaterniond R =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), spec.normal / n_norm);
+  addQuad(mesh, R * Eigen::Vector3d(-hx, -hy, 0), R * Eigen::Vector3d(hx, -hy, 0),
+          R * Eigen::Vector3d(hx, hy, 0), R * Eigen::Vector3d(-hx, hy, 0));
+}
+
+}  // namespace
+
+Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
+  Mesh mesh;
+  switch (spec.kind) {
+    case ShapeKind::Box:
+      requirePositive(spec.kind, "size x", spec.size.x());
+      requirePositive(spec.kind, "size y", spec.size.y());
+      requirePositive(spec.kind, "size z", spec.size.z());
+      buildBox(mesh, spec.size);
+      break;
+    case ShapeKind::Cylinder:
+      requirePositive(spec.kind, "radius", spec.size.x());
+      requirePositive(spec.kind, "length", spec.size.z());
+      requireAtLeast("cylinder_segments", options.cylinder_segments, 3);
+      buildCylinder(mesh, spec.size.x(), spec.size.z(), options.cylinder_segments);
+      break;
+    case ShapeKind::Sphere:
+      requirePositive(spec.kind, "radius", spec.size.x());
+      requireAtLeast("sphere_rings", options.sphere_rings, 2);
+      requireAtLeast("sphere_segments", options.sphere_segments, 3);
+      buildSphere(mesh, spec.size.x(), options.sphere_rings, options.sphere_segments);
+      break;
+    case ShapeKind::Plane:
+      buildPlane(mesh, spec, options);
+      break;
+  }
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    mesh.bounding_radius_m = std::max(mesh.bounding_radius_m, v.norm());
+  }
+  return mesh;
+}
+
+ShapeSpec ShapeSpec::box(double x_m, double y_m, double z_m, const Eigen::Vector4f& rgba) {
+  ShapeSpec s;
+  s.kind = ShapeKind::Box;
+  s.size = Eigen::Vector3d(x_m, y_m, z_m);
+  s.rgba = rgba;
+  return s;
+}
+
+ShapeSpec ShapeSpec::cylinder(double radius_m, double length_m, const Eigen::Vector4f& rgba) {
+  ShapeSpec s;
+  s.kind = ShapeKind::Cylinder;
+  s.size = Eigen::Vector3d(radius_m, radius_m, length_m);
+  s.rgba = rgba;
+  return s;
+}
+
+ShapeSpec ShapeSpec::sphere(double radius_m, const Eigen::Vector4f& rgba) {
+  ShapeSpec s;
+  s.kind = ShapeKind::Sphere;
+  s.size = Eigen::Vector3d(radius_m, radius_m, radius_m);
+  s.rgba = rgba;
+  return s;
+}
+
+ShapeSpec ShapeSpec::plane(double size_x_m, double size_y_m, const Eigen::Vector4f& rgba) {
+  ShapeSpec s;
+  s.kind = ShapeKind::Plane;
+  s.size = Eigen::Vector3d(size_x_m, size_y_m, 0);
+  s.rgba = rgba;
+  return s;
+}
+
+}  // namespace sim_render
