@@ -1,0 +1,52 @@
+#include "config.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace bullet_sim_node {
+namespace {
+
+void require(bool ok, const std::string& param, double value, const std::string& rule) {
+  if (ok) return;
+  std::ostringstream message;
+  message << "parameter " << param << " = " << value << " is invalid: " << rule;
+  throw ConfigError(message.str());
+}
+
+}  // namespace
+
+Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) {
+  Config config;
+  if (!private_nh.getParam("world_file", config.world_file) || config.world_file.empty())
+    throw ConfigError("parameter " + private_nh.resolveName("world_file") +
+                      " is not set: give the SDF world to load");
+  if (!nh.getParam("robot_description", config.robot_description) ||
+      config.robot_description.empty())
+    throw ConfigError("parameter " + nh.resolveName("robot_description") +
+                      " is not set: load the robot's URDF there (e.g. with xacro)");
+  private_nh.param("physics_step", config.physics_step_s, config.physics_step_s);
+  private_nh.param("real_time_factor", config.real_time_factor, config.real_time_factor);
+  private_nh.param("paused", config.start_paused, config.start_paused);
+  private_nh.param("seed", config.seed, config.seed);
+  private_nh.param("spawn_x", config.spawn_x_m, config.spawn_x_m);
+  private_nh.param("spawn_y", config.spawn_y_m, config.spawn_y_m);
+  private_nh.param("spawn_yaw", config.spawn_yaw_rad, config.spawn_yaw_rad);
+  private_nh.param("robot_name", config.robot_name, config.robot_name);
+  private_nh.param("status_period", config.status_period_s, config.status_period_s);
+
+  require(std::isfinite(config.physics_step_s) && config.physics_step_s >= 0 &&
+              config.physics_step_s <= 0.1,
+          "~physics_step", config.physics_step_s, "must be in [0, 0.1] s (0 = the world's)");
+  require(std::isfinite(config.real_time_factor) && config.real_time_factor >= 0,
+          "~real_time_factor", config.real_time_factor, "must be >= 0 (0 = as fast as possible)");
+  require(config.seed >= 0, "~seed", config.seed, "must be >= 0");
+  require(std::isfinite(config.spawn_x_m), "~spawn_x", config.spawn_x_m, "must be finite");
+  require(std::isfinite(config.spawn_y_m), "~spawn_y", config.spawn_y_m, "must be finite");
+  require(std::isfinite(config.spawn_yaw_rad), "~spawn_yaw", config.spawn_yaw_rad,
+          "must be finite");
+  require(std::isfinite(config.status_period_s) && config.status_period_s > 0,
+          "~status_period", config.status_period_s, "must be > 0 s");
+  return config;
+}
+
+}  // namespace bullet_sim_node

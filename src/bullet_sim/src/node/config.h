@@ -1,0 +1,32 @@
+// Parameters of bullet_sim_node, read once at start and validated.
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace bullet_sim_node {
+
+/// A parameter with a value the node cannot run with; the message names it.
+class ConfigError : public std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Config {
+  std::string world_file;            ///< ~world_file: SDF world (required)
+  double physics_step_s = 0;         ///< ~physics_step: 0 = the world's max_step_size
+  double real_time_factor = 1;       ///< ~real_time_factor: 1 real time, k faster, 0 unpaced
+  bool start_paused = false;         ///< ~paused
+  int seed = 1;                      ///< ~seed of every sensor noise source
+  double spawn_x_m = 0, spawn_y_m = 0, spawn_yaw_rad = 0;  ///< ~spawn_x, ~spawn_y, ~spawn_yaw
+  std::string robot_name;            ///< ~robot_name: "" = the URDF's robot name
+  double status_period_s = 1;        ///< ~status_period: wall seconds between status lines
+  std::string robot_description;     ///< the URDF, from the robot_description parameter
+};
+
+/// Reads the private parameters from `private_nh` and robot_description from `nh`.
+/// Throws ConfigError naming the parameter and its value when one is missing or out of range.
+Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,89 @@
+// bullet_sim_node: runs the Bullet simulation of a world and the robot of
+// robot_description, publishing /clock, odometry, tf, joint states, scan and imu, and
+// offering Gazebo's simulation services under /gazebo.
+#include "config.h"
+#include "pacer.h"
+#include "sim_runner.h"
+#include "sim_services.h"
+#include "status_reporter.h"
+
+#include <bullet_sim/errors.h>
+#include <bullet_sim/robot_spec.h>
+#include <bullet_sim/simulation.h>
+#include <bullet_sim/world_spec.h>
+
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+
+namespace {
+
+using bullet_sim_node::Config;
+
+bullet_sim::Pose3 spawnPose(const Config& config) {
+  bullet_sim::Pose3 pose;
+  pose.position = {config.spawn_x_m, config.spawn_y_m, 0.0};
+  pose.orientation = Eigen::AngleAxisd(config.spawn_yaw_rad, Eigen::Vector3d::UnitZ());
+  return pose;
+}
+
+void logWarnings(const std::string& source, const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings) ROS_WARN("%s: %s", source.c_str(), warning.c_str());
+}
+
+int run(const Config& config, ros::NodeHandle& nh) {
+  const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(config.world_file);
+  logWarnings(config.world_file, world.warnings);
+  const bullet_sim::RobotSpec robot =
+      bullet_sim::parseRobot(config.robot_description, "robot_description");
+  logWarnings("robot_description", robot.warnings);
+
+  bullet_sim::SimConfig sim_config;
+  sim_config.physics_step_s =
+      config.physics_step_s > 0 ? config.physics_step_s : world.max_step_size_s;
+  sim_config.seed = static_cast<uint64_t>(config.seed);
+  bullet_sim::Simulation sim(world, sim_config);
+  bullet_sim_node::SimRunner runner(sim, nh, config.start_paused);
+  const std::string robot_name = config.robot_name.empty() ? robot.name : config.robot_name;
+  runner.spawn(robot_name, robot, spawnPose(config), "");
+  bullet_sim_node::SimServices services(runner, ros::NodeHandle("/gazebo"));
+  bullet_sim_node::Pacer pacer(config.real_time_factor);
+  bullet_sim_node::StatusReporter status(sim, config.status_period_s);
+  ROS_INFO("world %s (%s), robot %s, physics step %g s, real-time factor %g%s",
+           world.name.c_str(), config.world_file.c_str(), robot_name.c_str(),
+           sim_config.physics_step_s, config.real_time_factor,
+           config.start_paused ? ", paused" : "");
+  runner.publishClock();
+
+  ros::CallbackQueue& callbacks = *ros::getGlobalCallbackQueue();
+  while (ros::ok()) {
+    if (runner.paused()) {
+      callbacks.callAvailable(ros::WallDuration(0.01));
+      runner.publishClock();
+      pacer.restart(sim.timeS());
+    } else {
+      callbacks.callAvailable();
+      runner.step();
+      pacer.waitUntil(sim.timeS());
+    }
+    status.maybeReport();
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "bullet_sim");
+  ros::NodeHandle nh;
+  try {
+    const Config config = bullet_sim_node::readConfig(nh, ros::NodeHandle("~"));
+    return run(config, nh);
+  } catch (const bullet_sim_node::ConfigError& error) {
+    ROS_FATAL("%s", error.what());
+  } catch (const bullet_sim::LoadError& error) {
+    ROS_FATAL("%s", error.what());
+  } catch (const std::exception& error) {
+    ROS_FATAL("simulation failed: %s", error.what());
+  }
+  return 1;
+}

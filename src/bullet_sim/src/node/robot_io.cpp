@@ -1,0 +1,93 @@
+#include "robot_io.h"
+
+#include "conversions.h"
+
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
+#include <sensor_msgs/LaserScan.h>
+
+#include <cmath>
+#include <optional>
+
+namespace bullet_sim_node {
+namespace {
+
+struct Field {
+  const char* name;
+  double value;
+};
+
+/// The first non-finite field of a command, if any.
+std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
+  const Field fields[] = {{"linear.x", command.linear.x},   {"linear.y", command.linear.y},
+                          {"linear.z", command.linear.z},   {"angular.x", command.angular.x},
+                          {"angular.y", command.angular.y}, {"angular.z", command.angular.z}};
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value)) return field;
+  return std::nullopt;
+}
+
+}  // namespace
+
+RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
+                 const ros::NodeHandle& robot_nh)
+    : sim_(sim), robot_(robot) {
+  ros::NodeHandle nh(robot_nh);
+  const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
+  for (const bullet_sim::RaySpec& ray : spec.rays)
+    scan_pubs_.push_back(nh.advertise<sensor_msgs::LaserScan>(ray.topic, 5));
+  for (const bullet_sim::ImuSpec& imu : spec.imus)
+    imu_pubs_.push_back(nh.advertise<sensor_msgs::Imu>(imu.topic, 50));
+  for (const bullet_sim::CameraSpec& camera : spec.cameras)
+    ROS_WARN("robot %s: camera '%s' on link %s is simulated but not published by this node",
+             robot_.c_str(), camera.name.c_str(), camera.link.c_str());
+  joint_state_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  if (spec.diff_drive) {
+    odom_pub_ = nh.advertise<nav_msgs::Odometry>(spec.diff_drive->odometry_topic, 10);
+    publish_odom_tf_ = spec.diff_drive->publish_odom_tf;
+    cmd_vel_sub_ = nh.subscribe(spec.diff_drive->command_topic, 1, &RobotIo::onCmdVel, this,
+                                ros::TransportHints().tcpNoDelay());
+  }
+}
+
+void RobotIo::publish(const bullet_sim::DueSensor& due) {
+  switch (due.kind) {
+    case bullet_sim::SensorKind::Ray:
+      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].getNumSubscribers() > 0)
+        scan_pubs_[due.index].publish(toMsg(sim_.readRay(robot_, due.index)));
+      break;
+    case bullet_sim::SensorKind::Imu:
+      if (due.index < imu_pubs_.size() && imu_pubs_[due.index].getNumSubscribers() > 0)
+        imu_pubs_[due.index].publish(toMsg(sim_.readImu(robot_, due.index)));
+      break;
+    case bullet_sim::SensorKind::Odometry:
+      publishOdometry();
+      break;
+    case bullet_sim::SensorKind::JointStates:
+      if (joint_state_pub_.getNumSubscribers() > 0)
+        joint_state_pub_.publish(toMsg(sim_.readJointStates(robot_)));
+      break;
+    case bullet_sim::SensorKind::Camera:
+      break;
+  }
+}
+
+void RobotIo::publishOdometry() {
+  const bool odom_wanted = odom_pub_ && odom_pub_.getNumSubscribers() > 0;
+  if (!odom_wanted && !publish_odom_tf_) return;
+  const bullet_sim::OdometryData odom = sim_.readOdometry(robot_);
+  if (publish_odom_tf_) tf_broadcaster_.sendTransform(toTransformMsg(odom));
+  if (odom_wanted) odom_pub_.publish(toMsg(odom));
+}
+
+void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {
+  if (const std::optional<Field> bad = firstNonFiniteField(*command)) {
+    ROS_WARN_THROTTLE(5.0, "robot %s: dropped a %s command: %s is %f", robot_.c_str(),
+                      cmd_vel_sub_.getTopic().c_str(), bad->name, bad->value);
+    return;
+  }
+  sim_.setCmdVel(robot_, command->linear.x, command->angular.z);
+}
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,43 @@
+// The ROS side of one simulated robot: its sensor publishers and its command subscriber.
+#pragma once
+
+#include <bullet_sim/simulation.h>
+
+#include <geometry_msgs/Twist.h>
+#include <ros/node_handle.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <string>
+#include <vector>
+
+namespace bullet_sim_node {
+
+/// Publishes a robot's sensors (scan, imu, odom + tf, joint_states) as they fall due and
+/// feeds its diff-drive commands to the simulation. Topic names come from the robot's
+/// Gazebo tags, resolved in `robot_nh` (the robot's namespace). A sensor topic nobody
+/// subscribes to is not read from the simulation at all; the odom tf is always sent.
+class RobotIo {
+ public:
+  RobotIo(bullet_sim::Simulation& sim, const std::string& robot, const ros::NodeHandle& robot_nh);
+  RobotIo(const RobotIo&) = delete;
+  RobotIo& operator=(const RobotIo&) = delete;
+
+  /// Publishes the reading of one due sensor of this robot, if it is wanted.
+  void publish(const bullet_sim::DueSensor& due);
+
+ private:
+  void onCmdVel(const geometry_msgs::Twist::ConstPtr& command);
+  void publishOdometry();
+
+  bullet_sim::Simulation& sim_;
+  const std::string robot_;
+  std::vector<ros::Publisher> scan_pubs_;  ///< one per RaySpec, same index
+  std::vector<ros::Publisher> imu_pubs_;   ///< one per ImuSpec, same index
+  ros::Publisher odom_pub_;
+  ros::Publisher joint_state_pub_;
+  ros::Subscriber cmd_vel_sub_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  bool publish_odom_tf_ = false;
+};
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,56 @@
+#include "sim_runner.h"
+
+#include <rosgraph_msgs/Clock.h>
+
+namespace bullet_sim_node {
+namespace {
+
+// /clock goes out at most this often in wall time between sensor readings: enough for
+// nodes that sleep on sim time, and cheap when the simulation runs 100x real time.
+constexpr std::chrono::milliseconds kClockWallPeriod{1};
+
+}  // namespace
+
+SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh, bool paused)
+    : sim_(sim), nh_(nh), paused_(paused) {
+  clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+}
+
+void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
+                      const bullet_sim::Pose3& pose, const std::string& robot_namespace) {
+  sim_.spawnRobot(name, spec, pose);
+  const ros::NodeHandle robot_nh(nh_, robot_namespace);
+  robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh);
+  spawn_poses_[name] = pose;
+}
+
+bool SimRunner::remove(const std::string& name) {
+  if (!sim_.deleteRobot(name)) return false;
+  robots_.erase(name);
+  spawn_poses_.erase(name);
+  return true;
+}
+
+const bullet_sim::Pose3& SimRunner::spawnPose(const std::string& name) const {
+  return spawn_poses_.at(name);
+}
+
+void SimRunner::step() {
+  const std::vector<bullet_sim::DueSensor> due = sim_.step();
+  const auto now = std::chrono::steady_clock::now();
+  // A reading stamped t goes out after the clock says t, so no listener sees the future.
+  if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
+  for (const bullet_sim::DueSensor& sensor : due) {
+    const auto robot = robots_.find(sensor.robot);
+    if (robot != robots_.end()) robot->second->publish(sensor);
+  }
+}
+
+void SimRunner::publishClock() {
+  rosgraph_msgs::Clock clock;
+  clock.clock.fromSec(sim_.timeS());
+  clock_pub_.publish(clock);
+  last_clock_wall_ = std::chrono::steady_clock::now();
+}
+
+}  // namespace bullet_sim_node

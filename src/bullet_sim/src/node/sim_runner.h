@@ -1,0 +1,51 @@
+// Steps the simulation and hands what falls due to the ROS side: /clock and robot sensors.
+#pragma once
+
+#include "robot_io.h"
+
+#include <bullet_sim/simulation.h>
+
+#include <ros/node_handle.h>
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace bullet_sim_node {
+
+/// Owns the robots' ROS adapters and the /clock publisher around one Simulation.
+/// Everything runs on the node's single thread (services and subscribers are called
+/// between steps), so nothing here is locked.
+class SimRunner {
+ public:
+  SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh, bool paused);
+
+  /// Adds a robot to the simulation and advertises its topics under `robot_namespace`.
+  /// Throws bullet_sim::LoadError as Simulation::spawnRobot does.
+  void spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
+             const bullet_sim::Pose3& pose, const std::string& robot_namespace);
+  bool remove(const std::string& name);
+  /// The pose a robot was spawned at (reset_world puts it back there).
+  const bullet_sim::Pose3& spawnPose(const std::string& name) const;
+
+  /// Advances one physics step and publishes /clock and every due, subscribed sensor.
+  void step();
+  /// Publishes the current sim time on /clock.
+  void publishClock();
+
+  bool paused() const { return paused_; }
+  void setPaused(bool paused) { paused_ = paused; }
+  bullet_sim::Simulation& sim() { return sim_; }
+
+ private:
+  bullet_sim::Simulation& sim_;
+  ros::NodeHandle nh_;
+  ros::Publisher clock_pub_;
+  std::map<std::string, std::unique_ptr<RobotIo>> robots_;
+  std::map<std::string, bullet_sim::Pose3> spawn_poses_;
+  std::chrono::steady_clock::time_point last_clock_wall_;
+  bool paused_;
+};
+
+}  // namespace bullet_sim_node
