@@ -1,0 +1,1 @@
+"""Steering window and terminal teleop: ROS-free logic plus thin ROS and Qt adapters."""
