@@ -85,6 +85,8 @@ class XqrobotWindowTest(unittest.TestCase):
             self.assertEqual(positions[other], 0.0)
         moved = positions['left_wheel_joint']
         angle, axis = self.current_wheel_rotation('left_wheel_link', moved, rest)
+        rospy.loginfo('dragged %d px: expected %.4f rad, published %.4f rad, tf turned %.4f rad',
+                      drag_px, expected, moved, angle)
         self.assertAlmostEqual(angle, abs(moved), delta=0.01)
         self.assertAlmostEqual(abs(axis @ AXIS), 1.0, delta=1e-3)
         still, _ = relative_rotation(rest_right, self.wheel_rotation('right_wheel_link'))
