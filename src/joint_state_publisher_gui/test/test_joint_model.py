@@ -4,9 +4,17 @@ import os
 import random
 import unittest
 
-from fixtures import HERE, urdf_text
 from joint_sliders.joint_model import JointModel, ModelError, ModelOptions, wrap_angle
 from joint_sliders.urdf_joints import Mimic, parse_joints
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def urdf_text(name):
+    """Text of the fixture test/urdf/<name>."""
+    with open(os.path.join(HERE, 'urdf', name), encoding='utf-8') as f:
+        return f.read()
+
 
 XQROBOT_URDF = os.path.join(HERE, '..', '..', '..', 'xqrobot_description', 'urdf',
                             'xqrobot_base.urdf')

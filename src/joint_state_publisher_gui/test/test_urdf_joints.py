@@ -1,9 +1,17 @@
 """Reading joints from URDF: types, limits, soft limits, mimic tags, and the errors."""
 import math
+import os
 import unittest
 
-from fixtures import urdf_text
 from joint_sliders.urdf_joints import Mimic, UrdfError, parse_joints
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def urdf_text(name):
+    """Text of the fixture test/urdf/<name>."""
+    with open(os.path.join(HERE, 'urdf', name), encoding='utf-8') as f:
+        return f.read()
 
 
 class ParseArmTest(unittest.TestCase):
