@@ -6,7 +6,7 @@ SHELL := /bin/bash
 export PATH := /usr/bin:/bin:/usr/sbin:/sbin:$(PATH)
 JOBS ?= 2
 CATKIN_MAKE := catkin_make --source . --build build \
-	-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3
+	-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES=""
 
 .PHONY: all setup build run test screenshots bench clean
 

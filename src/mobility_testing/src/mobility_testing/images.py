@@ -47,3 +47,33 @@ def hue_mask(image, predicate):
     """Mask of pixels for which predicate(r, g, b) (int arrays) is true."""
     r, g, b = (image[..., i].astype(np.int32) for i in range(3))
     return predicate(r, g, b)
+
+
+# Colour classes as they appear in lit 3D views (RViz shading scales colours):
+# each is a predicate on int32 channel arrays.
+COLOUR_CLASSES = {
+    'orange': lambda r, g, b: (r > 140) & (g > 0.25 * r) & (g < 0.65 * r) & (b < 0.25 * r),
+    'red': lambda r, g, b: (r > 110) & (g < 0.3 * r) & (b < 0.3 * r),
+    'blue': lambda r, g, b: (b > 110) & (r < 0.4 * b) & (g < 0.6 * b),
+    'white': lambda r, g, b: (r > 200) & (g > 200) & (b > 200),
+    'black': lambda r, g, b: (r < 22) & (g < 22) & (b < 22),
+    'brown': lambda r, g, b: (r > 70) & (r > g + 15) & (g > b + 15) & (b > 0.2 * r),
+    'grey': lambda r, g, b: (abs(r - g) < 10) & (abs(g - b) < 10) & (r > 60) & (r < 200),
+}
+
+
+def count_class(image, name):
+    """Number of pixels of the named colour class (a key of COLOUR_CLASSES)."""
+    return int(hue_mask(image, COLOUR_CLASSES[name]).sum())
+
+
+def region_of_colour(image, rgb, tolerance=3, min_fraction=0.2):
+    """Bounding box (top, bottom, left, right; exclusive ends) of the rows and
+    columns in which at least min_fraction of the pixels have colour rgb: the
+    extent of a view whose background is rgb (e.g. RViz's 3D panel)."""
+    mask = colour_mask(image, rgb, tolerance)
+    rows = np.flatnonzero(mask.mean(axis=1) >= min_fraction)
+    cols = np.flatnonzero(mask.mean(axis=0) >= min_fraction)
+    if rows.size == 0 or cols.size == 0:
+        return None
+    return int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1

@@ -1,0 +1,23 @@
+#!/bin/bash
+# Regenerates the README pictures: runs the GUI tests under a private X server
+# with SCREENSHOT_DIR pointing at docs/screenshots, where each saves its PNG.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
+export SCREENSHOT_DIR="$PWD/docs/screenshots"
+export ROS_HOME="$PWD/build/ros_home"
+mkdir -p "$SCREENSHOT_DIR"
+# shellcheck disable=SC1091
+source devel/setup.bash
+tests=(
+  "turtlebot_urdf test/model_rviz.test"
+  "turtlebot3_description test/display_rviz.test"
+  "xqrobot_description test/display_rviz.test"
+)
+for entry in "${tests[@]}"; do
+  read -r package test_file <<<"$entry"
+  echo "screenshots: $package $test_file"
+  xvfb-run -a -s "-screen 0 1600x1200x24 -nolisten tcp" \
+    rostest "$package" "$(basename "$test_file")" >/dev/null
+done
+ls -1 "$SCREENSHOT_DIR"
