@@ -24,7 +24,7 @@ class GraphWindowTest(unittest.TestCase):
         wait_for_connections([('/talker', '/chatter'), ('/relay', '/relayed')],
                              [('/listener', '/relayed')])
         cls.window = x11.wait_window('^Node Graph$', timeout_s=60)
-        cls.shot_dir = os.environ.get('ROS_HOME', '/tmp')
+        cls.shot_dir = os.environ.get('SCREENSHOT_DIR') or os.environ.get('ROS_HOME', '/tmp')
 
     def colours(self, name):
         shot = x11.screenshot_array(self.window, os.path.join(self.shot_dir, name))
@@ -39,7 +39,7 @@ class GraphWindowTest(unittest.TestCase):
                                  '__name:=late', '--pub', '/late_topic', '--sub', '/relayed'])
         self.addCleanup(late.wait)
         self.addCleanup(late.terminate)
-        wait_for(lambda: self.colours('graph_b.png')[1] > yellow * 1.2, 30,
+        wait_for(lambda: self.colours('graph_view.png')[1] > yellow * 1.2, 30,
                  f'more topic colour than {yellow} px once /late_topic exists')
         x11.key(self.window, 'ctrl+1')
         wait_for(lambda: self.colours('graph_c.png')[1] == 0, 15,

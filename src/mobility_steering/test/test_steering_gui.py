@@ -17,6 +17,7 @@ from twist_recorder import TwistRecorder  # noqa: E402
 STOP_RED = (198, 40, 40)
 RATE_HZ = 10.0
 ZERO_REPEATS = 3
+SHOT_DIR = os.environ.get('SCREENSHOT_DIR') or os.environ.get('ROS_HOME', '/tmp')
 
 
 class SteeringGuiTest(unittest.TestCase):
@@ -44,7 +45,7 @@ class SteeringGuiTest(unittest.TestCase):
         mark = self.press('a')
         wait_for(lambda: self.recorder.seen(0.04, 0.2, mark), 10, 'angular.z 0.2 after A')
 
-        path = os.path.join(os.environ.get('ROS_HOME', '/tmp'), 'steering_gui_test.png')
+        path = os.path.join(SHOT_DIR, 'steering_gui.png')
         shot = x11.screenshot_array(self.window, path)
         self.assertGreater(images.count_colour(shot, STOP_RED, 25), 5000,
                            f'no red STOP button in {path}')
