@@ -69,6 +69,17 @@ class SteeringGuiTest(unittest.TestCase):
         self.assertEqual(len(zeros), ZERO_REPEATS, f'zero messages after stop: {after}')
         self.assertEqual(after[-len(zeros):], zeros, 'last messages are the zeros')
 
+    def test_stop_button_click(self):
+        mark = self.press('s')
+        wait_for(lambda: self.recorder.seen(-0.02, 0.0, mark), 10, 'linear.x -0.02 after S')
+        shot = x11.screenshot_array(self.window, os.path.join(SHOT_DIR, 'steering_stop.png'))
+        rows, cols = images.colour_mask(shot, STOP_RED, 25).nonzero()
+        self.assertGreater(len(rows), 5000, 'no red STOP button to click')
+        mark = self.recorder.count()
+        x11.click(self.window, int(cols.mean()), int(rows.mean()))
+        wait_for(lambda: self.recorder.seen(0.0, 0.0, mark), 10, 'a zero Twist after STOP')
+        wait_for(lambda: self.recorder.quiet_for(1.5), 10, 'silence after STOP')
+
 
 if __name__ == '__main__':
     rostest.rosrun('mobility_steering', 'steering_gui_keys', SteeringGuiTest, sys.argv)

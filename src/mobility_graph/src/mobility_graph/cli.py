@@ -9,9 +9,13 @@ from mobility_graph.master_source import MasterUnreachable, fetch_state
 from mobility_graph.render import RenderError, output_format, write_graph
 
 
+def _prog():
+    return os.path.basename(sys.argv[0]) or 'graph_view'
+
+
 def parse_args(argv):
     parser = argparse.ArgumentParser(
-        prog='graph_view', description='Draw the ROS node graph (nodes, topics) with Graphviz.')
+        prog=_prog(), description='Draw the ROS node graph (nodes, topics) with Graphviz.')
     parser.add_argument('--output', '-o', metavar='FILE',
                         help='write the graph to FILE (.dot, .svg or .png) and exit, no window')
     parser.add_argument('--mode', choices=graph_model.MODES, default=graph_model.MODE_NODES,
@@ -41,16 +45,16 @@ def write_once(args):
         graph = graph_model.build_graph(fetch_state(), args.options)
         write_graph(args.output, to_dot(graph))
     except (MasterUnreachable, RenderError) as err:
-        print(f'graph_view: {err}', file=sys.stderr)
+        print(f'{_prog()}: {err}', file=sys.stderr)
         return 1
-    print(f'graph_view: wrote {args.output} ({len(graph.vertices)} vertices, '
+    print(f'{_prog()}: wrote {args.output} ({len(graph.vertices)} vertices, '
           f'{len(graph.edges)} edges)')
     return 0
 
 
 def run_window(args):
     if not (os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY')):
-        print('graph_view: no display (DISPLAY is not set); use --output FILE to write the '
+        print(f'{_prog()}: no display (DISPLAY is not set); use --output FILE to write the '
               'graph without a window', file=sys.stderr)
         return 1
     from PyQt5 import QtWidgets

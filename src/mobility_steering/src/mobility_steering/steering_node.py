@@ -1,4 +1,5 @@
 """ROS side of the steering window: parameters, the Twist publisher, the 10 Hz tick."""
+import os
 import sys
 import threading
 
@@ -47,6 +48,11 @@ class SteeringPublisher:
             if self._policy.tick(linear != 0.0 or angular != 0.0):
                 self._publisher.publish(make_twist(linear, angular))
 
+    def publish_stop(self):
+        """One zero Twist, e.g. when the window closes while the robot moves."""
+        with self._lock:
+            self._publisher.publish(make_twist(0.0, 0.0))
+
 
 def main(argv=None):
     argv = rospy.myargv(sys.argv if argv is None else argv)
@@ -57,6 +63,10 @@ def main(argv=None):
     except ConfigError as err:
         rospy.logfatal(str(err))
         return 2
+    if not (os.environ.get('DISPLAY') or os.environ.get('WAYLAND_DISPLAY')):
+        rospy.logfatal('the steering window needs a display (DISPLAY is not set); in a '
+                       'terminal use: rosrun mobility_steering teleop_keyboard')
+        return 1
     state = SteeringState(Range(config.vx_min_mps, config.vx_max_mps),
                           Range(config.vw_min_radps, config.vw_max_radps),
                           config.vx_step_mps, config.vw_step_radps)
@@ -89,4 +99,6 @@ def main(argv=None):
     window.show()
     status = app.exec_()
     ticker.stop()
+    if state.moving and not rospy.is_shutdown():
+        publisher.publish_stop()
     return status
