@@ -2,6 +2,7 @@
 """GUI test under X: the viewer shows a published picture, shows its rate, saves it exactly,
 lists image topics and names unsupported encodings."""
 import os
+import subprocess
 import sys
 import tempfile
 import time
@@ -148,6 +149,14 @@ class ImageViewGuiTest(unittest.TestCase):
         # widgets' anti-aliased text has a few).
         shot = self.shot(window, 'yuv.png')
         self.assertLess(images.count_colour(shot, GREY, 0), 200)
+
+    def test_bad_save_dir_is_named_and_exits(self):
+        result = subprocess.run(['rosrun', 'mobility_image_view', 'image_view_gui',
+                                 '_save_dir:=/no/such/dir'], capture_output=True, text=True,
+                                timeout=30)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn('image_view_gui: ~save_dir "/no/such/dir" is not an existing directory',
+                      result.stderr)
 
 
 if __name__ == '__main__':

@@ -18,6 +18,10 @@ PARAMS = ('topic', 'save_dir', 'print_status')
 def main(argv=None):
     """Runs the viewer until its window closes or ROS shuts down; returns the exit code."""
     argv = rospy.myargv(sys.argv if argv is None else argv)
+    if not rosgraph.is_master_online():
+        print(f'image_view_gui: no ROS master at {rosgraph.get_master_uri()}: start roscore '
+              'first', file=sys.stderr)
+        return 1
     rospy.init_node('image_view', anonymous=True, disable_signals=True)
     params = {name: rospy.get_param('~' + name) for name in PARAMS
               if rospy.has_param('~' + name)}
