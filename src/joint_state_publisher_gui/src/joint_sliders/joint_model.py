@@ -78,7 +78,6 @@ class JointModel:
     def __init__(self, specs, options=None):
         options = options or ModelOptions()
         movable = [s for s in specs if s.movable]
-        by_name = {s.name: s for s in movable}
         self.followers = self._followers(movable, options)
         self.order = [s.name for s in movable]
         self.free: Dict[str, FreeJoint] = {}
@@ -92,7 +91,7 @@ class JointModel:
             if name not in self.free:
                 raise ModelError(f'zeros/{name}: no free movable joint of that name')
         for name in self.followers:
-            self._root_leader(name, by_name)
+            self._check_no_loop(name)
 
     @staticmethod
     def _followers(movable, options):
@@ -110,14 +109,13 @@ class JointModel:
                                  'which is not a movable joint of this robot')
         return followers
 
-    def _root_leader(self, name, by_name):
+    def _check_no_loop(self, name):
         chain = [name]
         while chain[-1] in self.followers:
             leader = self.followers[chain[-1]].leader
             if leader in chain:
                 raise ModelError('mimic joints form a loop: ' + ' -> '.join(chain + [leader]))
             chain.append(leader)
-        return by_name[chain[-1]]
 
     @property
     def slider_joints(self) -> List[FreeJoint]:
@@ -125,7 +123,7 @@ class JointModel:
         return [self.free[name] for name in self.order if name in self.free]
 
     def set_position(self, name, position):
-        """Sets a free joint, limited to its range (continuous joints wrap); returns the value kept."""
+        """Sets a free joint within its range (continuous joints wrap); returns the value kept."""
         joint = self.free[name]
         if joint.type == 'continuous':
             position = wrap_angle(position)
