@@ -8,7 +8,6 @@ import signal
 import subprocess
 import sys
 import termios
-import time
 import unittest
 
 import rospy

@@ -2,8 +2,10 @@
 from mobility_graph.graph_model import NODE
 
 FONT = 'DejaVu Sans'
-NODE_STYLE = f'shape=ellipse, style=filled, fillcolor="#cfe2f3", color="#3d6a99", fontname="{FONT}"'
-TOPIC_STYLE = f'shape=box, style="rounded,filled", fillcolor="#fff2cc", color="#b08a2e", fontname="{FONT}"'
+NODE_STYLE = ('shape=ellipse, style=filled, fillcolor="#cfe2f3", color="#3d6a99", '
+              f'fontname="{FONT}"')
+TOPIC_STYLE = ('shape=box, style="rounded,filled", fillcolor="#fff2cc", color="#b08a2e", '
+               f'fontname="{FONT}"')
 
 
 def quote(text):
