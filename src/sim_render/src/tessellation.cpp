@@ -111,8 +111,12 @@ void buildPlane(Mesh& mesh, const ShapeSpec& spec, const TessellationOptions& op
   }
   const double hx = infinite ? options.infinite_plane_half_extent_m : 0.5 * spec.size.x();
   const double hy = infinite ? options.infinite_plane_half_extent_m : 0.5 * spec.size.y();
-  const Eigen::Quaterniond R =
-      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), spec.normal / n_norm);
+  // Columns u, v, n: a right-handed frame whose z is the normal (identity for n = +z).
+  const Eigen::Vector3d n = spec.normal / n_norm;
+  const Eigen::Vector3d helper = std::abs(n.y()) < 0.9 ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d u = helper.cross(n).normalized();
+  Eigen::Matrix3d R;
+  R << u, n.cross(u), n;
   addQuad(mesh, R * Eigen::Vector3d(-hx, -hy, 0), R * Eigen::Vector3d(hx, -hy, 0),
           R * Eigen::Vector3d(hx, hy, 0), R * Eigen::Vector3d(-hx, hy, 0));
 }
