@@ -22,6 +22,12 @@ def read_layout(path):
         return json.load(f)
 
 
+def remove_layout(path):
+    """Deletes the layout report at the end of a test (it lives in /tmp)."""
+    if os.path.exists(path):
+        os.remove(path)
+
+
 def wait_layout(path, condition, what):
     """Waits until the layout report satisfies condition(layout); returns it."""
     def check():

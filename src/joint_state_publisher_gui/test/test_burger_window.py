@@ -20,6 +20,7 @@ class BurgerWindowTest(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('test_burger_window')
         cls.report = rospy.get_param('~layout_report')
+        cls.addClassCleanup(gs.remove_layout, cls.report)
         cls.seed = rospy.get_param('~random_seed')
         cls.states = gs.JointStateWatcher()
         cls.window = gs.open_window()

@@ -17,6 +17,7 @@ class FixedOnlyWindowTest(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('test_fixed_only_window')
         cls.report = rospy.get_param('~layout_report')
+        cls.addClassCleanup(gs.remove_layout, cls.report)
         cls.states = gs.JointStateWatcher()
         cls.window = gs.open_window()
 

@@ -40,6 +40,7 @@ class XqrobotWindowTest(unittest.TestCase):
     def setUpClass(cls):
         rospy.init_node('test_xqrobot_window')
         cls.report = rospy.get_param('~layout_report')
+        cls.addClassCleanup(gs.remove_layout, cls.report)
         cls.states = gs.JointStateWatcher()
         cls.tf_buffer = tf2_ros.Buffer()
         cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
