@@ -42,12 +42,14 @@ void Scene::clear() {
   index_.clear();
 }
 
-const SceneShape& Scene::shape(ShapeId id) const {
+std::size_t Scene::slotOf(ShapeId id) const {
   const auto it = index_.find(id);
   if (it == index_.end()) throw std::out_of_range("sim_render::Scene: unknown shape id " + std::to_string(id));
-  return shapes_[it->second];
+  return it->second;
 }
 
-SceneShape& Scene::mutableShape(ShapeId id) { return const_cast<SceneShape&>(shape(id)); }
+const SceneShape& Scene::shape(ShapeId id) const { return shapes_[slotOf(id)]; }
+
+SceneShape& Scene::mutableShape(ShapeId id) { return shapes_[slotOf(id)]; }
 
 }  // namespace sim_render

@@ -61,6 +61,7 @@ class Scene {
   const Lighting& lighting() const { return lighting_; }
 
  private:
+  std::size_t slotOf(ShapeId id) const;
   SceneShape& mutableShape(ShapeId id);
 
   TessellationOptions options_;
