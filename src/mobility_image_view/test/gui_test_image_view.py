@@ -76,6 +76,7 @@ class ImageViewGuiTest(unittest.TestCase):
         fields = parse_status_line(line)
         self.assertEqual(fields['encoding'], 'rgb8', first)
         self.assertEqual(fields['size'], f'{WIDTH}x{HEIGHT}')
+        print(f"shown rate {fields['rate_hz']} Hz, published {camera.measured_rate_hz():.2f} Hz")
         self.assertAlmostEqual(float(fields['rate_hz']), camera.measured_rate_hz(), delta=0.3)
         self.assertAlmostEqual(float(fields['rate_hz']), RATE_HZ, delta=0.5)
 
@@ -108,6 +109,7 @@ class ImageViewGuiTest(unittest.TestCase):
         k = frame_number(pixels)
         self.assertIn(k, sent_by_then[-3:])
         np.testing.assert_array_equal(pixels, make_frame(k))
+        self.assertEqual(proc.stop(), 0, 'the viewer did not quit cleanly on SIGINT')
 
     def test_drop_down_lists_image_topics_and_refresh_adds_new_ones(self):
         camera = SyntheticCamera('/gui_test/first', RATE_HZ)
