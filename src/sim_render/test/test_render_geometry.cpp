@@ -183,6 +183,31 @@ TEST(Render, PlanePassingUnderTheCameraIsClippedWithoutArtifacts) {
   }
 }
 
+TEST(Render, TessellatedSphereHasNoCracks) {
+  Scene scene;
+  flatLight(scene);
+  const double radius = 1.0, distance = 3.0;
+  scene.add(ShapeSpec::sphere(radius, kRed), at(distance, 0.1, -0.2));
+  Renderer renderer(squareCamera());
+  std::vector<std::uint8_t> image;
+  renderer.render(scene, Eigen::Isometry3d::Identity(), image);
+  // The default 12 x 24 polyhedron holds the sphere of radius r cos(pi / 12) cos(pi / 24):
+  // every ray that meets that sphere must hit a triangle.
+  const double inner = radius * std::cos(M_PI / 12) * std::cos(M_PI / 24);
+  const Eigen::Vector3d centre(distance, 0.1, -0.2);
+  int checked = 0;
+  for (int row = 0; row < 480; ++row) {
+    for (int col = 0; col < 640; ++col) {
+      const Eigen::Vector3d ray = Eigen::Vector3d(1, -(col - 320) / 320.0, -(row - 240) / 320.0).normalized();
+      const double miss_distance = (centre - centre.dot(ray) * ray).norm();
+      if (miss_distance >= inner) continue;
+      ++checked;
+      ASSERT_EQ(pixel(image, 640, col, row), (Rgb{255, 0, 0})) << "crack at col " << col << " row " << row;
+    }
+  }
+  EXPECT_GT(checked, 30000);
+}
+
 TEST(Render, SameSceneGivesSameBytes) {
   Scene scene;
   scene.add(ShapeSpec::plane(0, 0, kGreen), Eigen::Isometry3d::Identity());
