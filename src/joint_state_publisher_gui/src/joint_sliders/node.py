@@ -31,6 +31,10 @@ class SourceBridge(QObject):
 
     received = pyqtSignal(object)
 
+    def __init__(self):
+        super().__init__()
+        self.subscribers = []
+
     def subscribe(self, topics):
         """Subscribes to every source_list topic; keeps the subscribers."""
         self.subscribers = [rospy.Subscriber(t, JointState, self.received.emit, queue_size=10)
