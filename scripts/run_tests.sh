@@ -13,7 +13,7 @@ rm -rf build/test_results
 # shellcheck disable=SC1091
 source devel/setup.bash
 # Every rostest carries its own time limit; this bound only guards the whole run.
-timeout --kill-after=30 4800 xvfb-run -a -s "-screen 0 1600x1200x24 -nolisten tcp" \
+timeout --kill-after=30 4800 xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tcp" \
   catkin_make --source . --build build -DCMAKE_BUILD_TYPE=Release \
   -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" run_tests -j1 > build/test.log 2>&1
 run_status=$?

@@ -17,7 +17,7 @@ tests=(
 for entry in "${tests[@]}"; do
   read -r package test_file <<<"$entry"
   echo "screenshots: $package $test_file"
-  xvfb-run -a -s "-screen 0 1600x1200x24 -nolisten tcp" \
+  xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tcp" \
     rostest "$package" "$(basename "$test_file")" >/dev/null
 done
 ls -1 "$SCREENSHOT_DIR"

@@ -77,3 +77,12 @@ def region_of_colour(image, rgb, tolerance=3, min_fraction=0.2):
     if rows.size == 0 or cols.size == 0:
         return None
     return int(rows[0]), int(rows[-1]) + 1, int(cols[0]), int(cols[-1]) + 1
+
+
+def save_png(image, path):
+    """Writes an (H, W, 3) uint8 array as a PNG file (via ImageMagick's convert)."""
+    height, width = image.shape[:2]
+    header = f'P6\n{width} {height}\n255\n'.encode()
+    subprocess.run(['/usr/bin/convert', 'ppm:-', path], input=header + image.tobytes(),
+                   check=True, capture_output=True)
+    return path

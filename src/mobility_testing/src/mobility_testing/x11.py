@@ -58,7 +58,7 @@ def key(window, *keys):
 def type_text(window, text):
     """Types text into the focused widget of a window."""
     activate(window)
-    _xdotool('type', '--window', window, '--delay', 20, text)
+    _xdotool('type', '--window', window, '--delay', 20, '--', text)
 
 
 def click(window, x, y, button=1):
@@ -77,6 +77,11 @@ def drag(window, x0, y0, x1, y1, steps=10):
         _xdotool('mousemove', '--window', window,
                  x0 + (x1 - x0) * i // steps, y0 + (y1 - y0) * i // steps)
     _xdotool('mouseup', 1)
+
+
+def move(window, x, y):
+    """Moves a window's top-left corner to (x, y) on the screen."""
+    _xdotool('windowmove', '--sync', window, x, y)
 
 
 def screenshot(window, path):
