@@ -1,0 +1,241 @@
+#include "bullet_sim/camera_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include <sim_render/renderer.h>
+
+#include "bullet_sim/errors.h"
+
+namespace bullet_sim {
+namespace {
+
+Eigen::Isometry3d toIsometry(const Pose3& pose) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translate(pose.position);
+  T.rotate(pose.orientation.normalized());
+  return T;
+}
+
+std::string cameraName(const CameraSpec& camera) {
+  return "camera '" + camera.name + "' on link '" + camera.link + "'";
+}
+
+sim_render::CameraModel cameraModel(const CameraSpec& camera) {
+  sim_render::CameraModel model;
+  model.width = camera.width;
+  model.height = camera.height;
+  model.horizontal_fov_rad = camera.horizontal_fov_rad;
+  model.clip_near_m = camera.clip_near_m;
+  model.clip_far_m = camera.clip_far_m;
+  return model;
+}
+
+/// World pose of `link` among `poses`; `hint` remembers where it was last time, since the
+/// simulation lists the links in the same order on every call.
+const Pose3* findLink(const std::vector<LinkPose>& poses, const std::string& link, size_t* hint) {
+  if (*hint < poses.size() && poses[*hint].link == link) return &poses[*hint].pose;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    if (poses[i].link == link) {
+      *hint = i;
+      return &poses[i].pose;
+    }
+  }
+  return nullptr;
+}
+
+void toMono(const std::vector<uint8_t>& rgb, std::vector<uint8_t>* mono) {
+  mono->resize(rgb.size() / 3);
+  for (size_t i = 0; i < mono->size(); ++i) {
+    const double y = 0.299 * rgb[3 * i] + 0.587 * rgb[3 * i + 1] + 0.114 * rgb[3 * i + 2];
+    (*mono)[i] = static_cast<uint8_t>(std::lround(std::min(255.0, y)));
+  }
+}
+
+}  // namespace
+
+std::string imageEncoding(const CameraSpec& camera) {
+  if (camera.format == "R8G8B8") return "rgb8";
+  if (camera.format == "B8G8R8") return "bgr8";
+  if (camera.format == "L8") return "mono8";
+  throw LoadError(cameraName(camera) + ": <image><format> '" + camera.format +
+                  "' is not supported (R8G8B8, B8G8R8 or L8)");
+}
+
+void validateCamera(const CameraSpec& camera) {
+  try {
+    cameraModel(camera).validate();
+  } catch (const std::invalid_argument& e) {
+    throw LoadError(cameraName(camera) + ": " + e.what());
+  }
+  imageEncoding(camera);
+}
+
+CameraInfoData cameraInfo(const CameraSpec& camera, double time_s) {
+  const sim_render::CameraModel model = cameraModel(camera);
+  CameraInfoData info;
+  info.time_s = time_s;
+  info.frame_id = camera.frame_id;
+  info.width = camera.width;
+  info.height = camera.height;
+  info.K = model.K();
+  info.P = model.P();
+  return info;
+}
+
+struct CameraRenderer::Impl {
+  /// A robot visual in the scene and the link that carries it.
+  struct Visual {
+    std::string link;
+    size_t link_hint = 0;
+    Eigen::Isometry3d T_link_visual;
+    sim_render::ShapeId id = 0;
+  };
+  struct RobotScene {
+    const urdf::ModelInterface* model = nullptr;  ///< tells a respawned robot apart
+    std::vector<Visual> visuals;
+    std::vector<std::unique_ptr<sim_render::Renderer>> renderers;  ///< per camera, lazily
+    std::vector<size_t> camera_link_hints;
+  };
+
+  explicit Impl(const Simulation& s) : sim(s) {
+    const WorldSpec& world = sim.world();
+    scene.lighting().direction = world.light_direction;
+    scene.lighting().ambient = world.ambient.head<3>();
+    for (const StaticShape& s : world.shapes) {
+      const sim_render::ShapeSpec spec{static_cast<sim_render::ShapeKind>(s.kind), s.size,
+                                       s.normal, s.rgba};
+      try {
+        scene.add(spec, toIsometry(s.pose));
+      } catch (const std::invalid_argument& e) {
+        warnings.push_back("world shape of model '" + s.model + "' link '" + s.link +
+                           "' not drawn: " + e.what());
+      }
+    }
+  }
+
+  void addRobot(const std::string& name, const RobotSpec& spec, RobotScene* robot) {
+    robot->model = spec.urdf.get();
+    robot->renderers.resize(spec.cameras.size());
+    robot->camera_link_hints.assign(spec.cameras.size(), 0);
+    for (const VisualSpec& v : spec.visuals) {
+      const std::string where = "robot '" + name + "' link '" + v.link + "': visual";
+      if (v.kind == VisualSpec::Mesh) {
+        warnings.push_back(where + " is a mesh, which the camera does not draw");
+        continue;
+      }
+      const sim_render::ShapeSpec shape{static_cast<sim_render::ShapeKind>(v.kind), v.size,
+                                        Eigen::Vector3d::UnitZ(), v.rgba};
+      try {
+        const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
+        robot->visuals.push_back({v.link, 0, T_link_visual, scene.add(shape, T_link_visual)});
+      } catch (const std::invalid_argument& e) {
+        warnings.push_back(where + " not drawn: " + e.what());
+      }
+    }
+  }
+
+  void dropRobot(RobotScene* robot) {
+    for (const Visual& v : robot->visuals) scene.remove(v.id);
+    robot->visuals.clear();
+  }
+
+  /// Brings the scene's robots in line with the simulation's.
+  void syncRobots() {
+    const std::vector<std::string> names = sim.robotNames();
+    const std::set<std::string> alive(names.begin(), names.end());
+    for (auto it = robots.begin(); it != robots.end();) {
+      if (alive.count(it->first) == 0) {
+        dropRobot(&it->second);
+        it = robots.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    for (const std::string& name : names) {
+      const RobotSpec& spec = sim.robotSpec(name);
+      auto it = robots.find(name);
+      if (it != robots.end() && it->second.model == spec.urdf.get()) continue;
+      if (it != robots.end()) {
+        dropRobot(&it->second);
+        robots.erase(it);
+      }
+      addRobot(name, spec, &robots[name]);
+    }
+  }
+
+  /// Moves every robot's visuals to their links' current poses.
+  void poseRobots(const std::string& camera_robot) {
+    for (auto& [name, robot] : robots) {
+      std::vector<LinkPose>& poses = name == camera_robot ? camera_robot_poses : other_poses;
+      poses = sim.linkPoses(name);
+      for (Visual& v : robot.visuals) {
+        const Pose3* link = findLink(poses, v.link, &v.link_hint);
+        if (link) scene.setPose(v.id, toIsometry(*link) * v.T_link_visual);
+      }
+    }
+  }
+
+  const Simulation& sim;
+  sim_render::Scene scene;
+  std::map<std::string, RobotScene> robots;
+  std::vector<std::string> warnings;
+  std::vector<LinkPose> camera_robot_poses, other_poses;
+  std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
+};
+
+CameraRenderer::CameraRenderer(const Simulation& sim) : impl_(std::make_unique<Impl>(sim)) {}
+
+CameraRenderer::~CameraRenderer() = default;
+
+const std::vector<std::string>& CameraRenderer::warnings() const { return impl_->warnings; }
+
+void CameraRenderer::render(const std::string& robot, size_t index, ImageData* image) {
+  const RobotSpec& spec = impl_->sim.robotSpec(robot);
+  if (index >= spec.cameras.size()) {
+    throw std::out_of_range("robot '" + robot + "' has no camera " + std::to_string(index) +
+                            " (it has " + std::to_string(spec.cameras.size()) + ")");
+  }
+  const CameraSpec& camera = spec.cameras[index];
+  impl_->syncRobots();
+  Impl::RobotScene& scene_robot = impl_->robots.at(robot);
+  std::unique_ptr<sim_render::Renderer>& renderer = scene_robot.renderers[index];
+  if (!renderer) {
+    validateCamera(camera);
+    renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
+  }
+  impl_->poseRobots(robot);
+  const Pose3* link =
+      findLink(impl_->camera_robot_poses, camera.link, &scene_robot.camera_link_hints[index]);
+  if (!link) throw LoadError(cameraName(camera) + " of robot '" + robot + "': no such link");
+  const Eigen::Isometry3d T_world_camera = toIsometry(*link) * toIsometry(camera.pose_in_link);
+
+  image->time_s = impl_->sim.timeS();
+  image->frame_id = camera.frame_id;
+  image->width = camera.width;
+  image->height = camera.height;
+  image->encoding = imageEncoding(camera);
+  if (image->encoding == "rgb8") {
+    renderer->render(impl_->scene, T_world_camera, image->data);
+    image->step = 3 * camera.width;
+    return;
+  }
+  renderer->render(impl_->scene, T_world_camera, impl_->rgb);
+  if (image->encoding == "mono8") {
+    toMono(impl_->rgb, &image->data);
+    image->step = camera.width;
+    return;
+  }
+  image->data.resize(impl_->rgb.size());
+  for (size_t i = 0; i + 2 < impl_->rgb.size(); i += 3) {
+    image->data[i] = impl_->rgb[i + 2];
+    image->data[i + 1] = impl_->rgb[i + 1];
+    image->data[i + 2] = impl_->rgb[i];
+  }
+  image->step = 3 * camera.width;
+}
+
+}  // namespace bullet_sim
