@@ -2,6 +2,7 @@
 #include <sstream>
 
 #include <sdf/sdf.hh>
+#include <tinyxml2.h>
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/world_spec.h"
@@ -172,12 +173,23 @@ std::string describe(const sdf::Errors& errors) {
   return out.str();
 }
 
+/// sdformat reports malformed XML only as "Unable to read file"; tinyxml2
+/// (the parser it uses) says what and where.
+void checkXml(const std::string& xml, const std::string& source) {
+  tinyxml2::XMLDocument doc;
+  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
+    throw LoadError(source + ": invalid SDF world: malformed XML: " + doc.ErrorStr());
+  }
+}
+
 }  // namespace
 
 WorldSpec loadWorldFile(const std::string& path) {
-  if (!std::ifstream(path).good()) {
-    throw LoadError(path + ": world file does not exist or cannot be read");
-  }
+  std::ifstream in(path);
+  if (!in.good()) throw LoadError(path + ": world file does not exist or cannot be read");
+  std::stringstream text;
+  text << in.rdbuf();
+  checkXml(text.str(), path);
   sdf::Root root;
   const sdf::Errors errors = root.Load(path);
   if (!errors.empty()) throw LoadError(path + ": invalid SDF world: " + describe(errors));
@@ -185,6 +197,7 @@ WorldSpec loadWorldFile(const std::string& path) {
 }
 
 WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name) {
+  checkXml(sdf_xml, source_name);
   sdf::Root root;
   const sdf::Errors errors = root.LoadSdfString(sdf_xml);
   if (!errors.empty()) throw LoadError(source_name + ": invalid SDF world: " + describe(errors));

@@ -1,0 +1,186 @@
+#include "physics_robot.h"
+
+#include <cmath>
+
+#include "bullet_convert.h"
+
+namespace bullet_sim {
+namespace {
+
+/// Bullet's default 4 cm margin would swell the Burger's millimetre parts.
+constexpr double kMarginM = 0.0005;
+
+std::unique_ptr<btCollisionShape> makeShape(const CollisionPlan& c) {
+  std::unique_ptr<btConvexInternalShape> s;
+  switch (c.kind) {
+    case CollisionPlan::Box:
+      s = std::make_unique<btBoxShape>(toBt(c.size * 0.5));
+      break;
+    case CollisionPlan::Cylinder:
+      s = std::make_unique<btCylinderShapeZ>(btVector3(c.size.x(), c.size.y(), c.size.z() * 0.5));
+      break;
+    case CollisionPlan::Sphere:
+      s = std::make_unique<btSphereShape>(c.size.x());
+      break;
+  }
+  s->setMargin(kMarginM);
+  return s;
+}
+
+/// With the reference frame on the parent, Bullet's hinge angle and motor
+/// velocity are the child's rotation about the axis, as URDF defines them.
+constexpr bool kAngleOfChildInParent = true;
+
+double wrapToPi(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+}  // namespace
+
+PhysicsRobot::PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPlan plan,
+                           const Eigen::Isometry3d& T_world_model)
+    : world_(world), plan_(std::move(plan)) {
+  bodies_.reserve(plan_.bodies.size());
+  for (const BodyPlan& b : plan_.bodies) buildBody(b, robot_id);
+  placeBodies(T_world_model);
+  for (const JointPlan& j : plan_.joints) {
+    const Eigen::Quaterniond align =
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), j.axis);
+    const Eigen::Isometry3d frame_in_parent =
+        bodies_[j.parent_body].T_com_root * j.T_parentroot_joint * Eigen::Isometry3d(align);
+    const Eigen::Isometry3d frame_in_child = bodies_[j.child_body].T_com_root * Eigen::Isometry3d(align);
+    auto hinge = std::make_unique<btHingeConstraint>(
+        *bodies_[j.parent_body].rigid, *bodies_[j.child_body].rigid, toBt(frame_in_parent),
+        toBt(frame_in_child), kAngleOfChildInParent);
+    if (j.limited) hinge->setLimit(j.lower, j.upper);
+    world_->addConstraint(hinge.get(), true);
+    hinges_.push_back(std::move(hinge));
+  }
+  joint_angles_.assign(hinges_.size(), 0.0);
+  last_raw_angles_.assign(hinges_.size(), 0.0);
+}
+
+PhysicsRobot::~PhysicsRobot() {
+  for (auto& h : hinges_) world_->removeConstraint(h.get());
+  for (auto& b : bodies_) world_->removeRigidBody(b.rigid.get());
+}
+
+void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
+  Body body;
+  body.T_com_root = plan.T_root_com.inverse();
+  body.material.robot_id = robot_id;
+  const bool single_at_com =
+      plan.collisions.size() == 1 &&
+      (body.T_com_root * plan.collisions[0].T_root_geom).isApprox(Eigen::Isometry3d::Identity(), 1e-12);
+  if (plan.collisions.empty()) {
+    body.shape = std::make_unique<btEmptyShape>();
+  } else if (single_at_com) {
+    // Saves the compound's per-step overhead (the Burger's wheels).
+    body.shape = makeShape(plan.collisions[0]);
+    body.material.child_friction.push_back(plan.collisions[0].friction);
+  } else {
+    auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(plan.collisions.size()));
+    for (const CollisionPlan& c : plan.collisions) {
+      body.children.push_back(makeShape(c));
+      compound->addChildShape(toBt(body.T_com_root * c.T_root_geom), body.children.back().get());
+      body.material.child_friction.push_back(c.friction);
+    }
+    body.shape = std::move(compound);
+  }
+  body.motion = std::make_unique<btDefaultMotionState>();
+  btRigidBody::btRigidBodyConstructionInfo info(plan.mass_kg, body.motion.get(), body.shape.get(),
+                                                toBt(plan.principal_inertia));
+  body.rigid = std::make_unique<btRigidBody>(info);
+  body.rigid->setActivationState(DISABLE_DEACTIVATION);
+  // ODE (Gazebo) integrates no gyroscopic term either; it costs a third of a step.
+  body.rigid->setFlags(body.rigid->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
+  body.rigid->setUserIndex(robot_id);
+  bodies_.push_back(std::move(body));
+  Body& stored = bodies_.back();
+  stored.rigid->setUserPointer(&stored.material);
+  if (plan.collisions.empty()) {
+    // A link without collision (the flag) is never touched and never seen by rays.
+    world_->addRigidBody(stored.rigid.get(), 0, 0);
+  } else {
+    stored.rigid->setCollisionFlags(stored.rigid->getCollisionFlags() |
+                                    btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+    world_->addRigidBody(stored.rigid.get());
+  }
+}
+
+void PhysicsRobot::placeBodies(const Eigen::Isometry3d& T_world_model) {
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    const Eigen::Isometry3d T_model_root = plan_.T_model_link.at(plan_.bodies[i].root_link);
+    const Eigen::Isometry3d T_world_com = T_world_model * T_model_root * plan_.bodies[i].T_root_com;
+    btRigidBody& rb = *bodies_[i].rigid;
+    rb.setWorldTransform(toBt(T_world_com));
+    rb.setInterpolationWorldTransform(rb.getWorldTransform());
+    bodies_[i].motion->setWorldTransform(rb.getWorldTransform());
+  }
+}
+
+void PhysicsRobot::moveRoot(const Eigen::Isometry3d& T_world_root, const Twist3& twist) {
+  const Eigen::Isometry3d T_new_old = T_world_root * linkPose(plan_.bodies[0].root_link).inverse();
+  const Eigen::Vector3d origin = T_world_root.translation();
+  for (Body& b : bodies_) {
+    btRigidBody& rb = *b.rigid;
+    const Eigen::Isometry3d T = T_new_old * toEigen(rb.getWorldTransform());
+    rb.setWorldTransform(toBt(T));
+    rb.setInterpolationWorldTransform(rb.getWorldTransform());
+    b.motion->setWorldTransform(rb.getWorldTransform());
+    rb.setLinearVelocity(toBt(twist.linear + twist.angular.cross(T.translation() - origin)));
+    rb.setAngularVelocity(toBt(twist.angular));
+    rb.clearForces();
+  }
+}
+
+Eigen::Isometry3d PhysicsRobot::T_world_body(size_t body) const {
+  return toEigen(bodies_[body].rigid->getWorldTransform());
+}
+
+bool PhysicsRobot::hasLink(const std::string& link) const {
+  return plan_.body_of_link.count(link) > 0;
+}
+
+Eigen::Isometry3d PhysicsRobot::linkPose(const std::string& link) const {
+  const size_t b = plan_.body_of_link.at(link);
+  return T_world_body(b) * bodies_[b].T_com_root * plan_.bodies[b].T_root_link.at(link);
+}
+
+Twist3 PhysicsRobot::linkTwist(const std::string& link) const {
+  const size_t b = plan_.body_of_link.at(link);
+  const btRigidBody& rb = *bodies_[b].rigid;
+  Twist3 t;
+  t.angular = toEigen(rb.getAngularVelocity());
+  const Eigen::Vector3d r = linkPose(link).translation() - toEigen(rb.getCenterOfMassPosition());
+  t.linear = toEigen(rb.getLinearVelocity()) + t.angular.cross(r);
+  return t;
+}
+
+int PhysicsRobot::jointIndex(const std::string& name) const {
+  for (size_t i = 0; i < plan_.joints.size(); ++i) {
+    if (plan_.joints[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+double PhysicsRobot::jointVelocity(size_t joint) const {
+  const btHingeConstraint& h = *hinges_[joint];
+  const btVector3 axis =
+      h.getRigidBodyA().getWorldTransform().getBasis() * h.getAFrame().getBasis().getColumn(2);
+  return (h.getRigidBodyB().getAngularVelocity() - h.getRigidBodyA().getAngularVelocity()).dot(axis);
+}
+
+void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max_torque_nm,
+                                 double dt) {
+  hinges_[joint]->enableAngularMotor(true, velocity_radps, max_torque_nm * dt);
+}
+
+void PhysicsRobot::updateJointAngles() {
+  for (size_t i = 0; i < hinges_.size(); ++i) {
+    btHingeConstraint& h = *hinges_[i];
+    const double raw = h.getHingeAngle();
+    joint_angles_[i] += wrapToPi(raw - last_raw_angles_[i]);
+    last_raw_angles_[i] = raw;
+  }
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,72 @@
+#ifndef BULLET_SIM_CORE_PHYSICS_ROBOT_H
+#define BULLET_SIM_CORE_PHYSICS_ROBOT_H
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "bullet_sim/types.h"
+#include "robot_plan.h"
+
+namespace bullet_sim {
+
+/// Per-body data Bullet's contact callback reads: the friction of each child
+/// shape of the body's compound (links merged into one body keep their own mu).
+struct BodyMaterial {
+  int robot_id = -1;
+  std::vector<double> child_friction;
+};
+
+/// The Bullet bodies and hinges of one robot, added to a dynamics world.
+class PhysicsRobot {
+ public:
+  PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPlan plan,
+               const Eigen::Isometry3d& T_world_model);
+  ~PhysicsRobot();
+  PhysicsRobot(const PhysicsRobot&) = delete;
+  PhysicsRobot& operator=(const PhysicsRobot&) = delete;
+
+  /// Moves the robot rigidly so that its root link lands on T_world_root,
+  /// keeping its joint configuration.
+  void moveRoot(const Eigen::Isometry3d& T_world_root, const Twist3& twist);
+
+  Eigen::Isometry3d linkPose(const std::string& link) const;
+  /// World-frame velocity of a link's origin.
+  Twist3 linkTwist(const std::string& link) const;
+  bool hasLink(const std::string& link) const;
+
+  const RobotPlan& plan() const { return plan_; }
+  /// Index into plan().joints, or -1.
+  int jointIndex(const std::string& name) const;
+  double jointPosition(size_t joint) const { return joint_angles_[joint]; }
+  double jointVelocity(size_t joint) const;
+  void setJointMotor(size_t joint, double velocity_radps, double max_torque_nm, double dt);
+  /// Tracks the hinge angles across +-pi; called after every physics step.
+  void updateJointAngles();
+
+ private:
+  struct Body {
+    std::unique_ptr<btCollisionShape> shape;
+    std::vector<std::unique_ptr<btCollisionShape>> children;
+    std::unique_ptr<btDefaultMotionState> motion;
+    std::unique_ptr<btRigidBody> rigid;
+    BodyMaterial material;
+    Eigen::Isometry3d T_com_root;  ///< inverse of the plan's T_root_com
+  };
+  void buildBody(const BodyPlan& plan, int robot_id);
+  /// Puts every body where the zero-joint configuration at T_world_model puts it.
+  void placeBodies(const Eigen::Isometry3d& T_world_model);
+  Eigen::Isometry3d T_world_body(size_t body) const;
+
+  btDiscreteDynamicsWorld* world_;
+  RobotPlan plan_;
+  std::vector<Body> bodies_;
+  std::vector<std::unique_ptr<btHingeConstraint>> hinges_;
+  std::vector<double> joint_angles_, last_raw_angles_;
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_PHYSICS_ROBOT_H

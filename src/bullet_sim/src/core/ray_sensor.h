@@ -1,0 +1,24 @@
+#ifndef BULLET_SIM_CORE_RAY_SENSOR_H
+#define BULLET_SIM_CORE_RAY_SENSOR_H
+
+#include <random>
+
+#include <btBulletCollisionCommon.h>
+#include <Eigen/Geometry>
+
+#include "bullet_sim/robot_spec.h"
+#include "bullet_sim/sensor_data.h"
+
+namespace bullet_sim {
+
+/// Casts one planar scan as Gazebo's ray sensor does: rays lie in the sensor's
+/// x-y plane, angle 0 is +x and angles grow counter-clockwise; each ray starts
+/// at range_min (so the robot's own parts nearer than that are not seen);
+/// nothing within range_max reads +inf; hits get gaussian noise, are rounded
+/// to the range resolution and clamped to [range_min, range_max].
+void castScan(const btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
+              const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_RAY_SENSOR_H

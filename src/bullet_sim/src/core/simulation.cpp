@@ -1,0 +1,267 @@
+#include "bullet_sim/simulation.h"
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <random>
+#include <stdexcept>
+
+#include "bullet_sim/errors.h"
+#include "diff_drive.h"
+#include "imu_sensor.h"
+#include "physics_robot.h"
+#include "physics_world.h"
+#include "ray_sensor.h"
+#include "robot_plan.h"
+#include "sensor_schedule.h"
+
+namespace bullet_sim {
+
+struct Simulation::Impl {
+  struct Robot {
+    int id;  ///< spawn order; rebuilding in this order replays a run exactly
+    RobotSpec spec;
+    Eigen::Isometry3d T_world_spawn;
+    std::unique_ptr<PhysicsRobot> physics;
+    std::optional<DiffDriveController> drive;
+    std::vector<std::mt19937_64> ray_rngs, imu_rngs;
+    std::vector<ImuSensor> imus;
+    SensorSchedule schedule;
+  };
+
+  Impl(const WorldSpec& w, const SimConfig& c)
+      : world(w), cfg(c), physics(std::make_unique<PhysicsWorld>(w)) {}
+
+  Robot& robot(const std::string& name) {
+    auto it = robots.find(name);
+    if (it == robots.end()) throw std::out_of_range("no robot named '" + name + "'");
+    return *it->second;
+  }
+  const Robot& robot(const std::string& name) const {
+    return const_cast<Impl*>(this)->robot(name);
+  }
+
+  void seedSensors(const std::string& name, Robot* r) const {
+    r->ray_rngs.clear();
+    r->imu_rngs.clear();
+    for (const RaySpec& s : r->spec.rays) r->ray_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    for (const ImuSpec& s : r->spec.imus) r->imu_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    for (ImuSensor& imu : r->imus) imu.reset();
+  }
+
+  WorldSpec world;
+  SimConfig cfg;
+  std::unique_ptr<PhysicsWorld> physics;
+  std::map<std::string, std::unique_ptr<Robot>> robots;
+  uint64_t steps = 0;
+  int next_robot_id = 0;
+};
+
+namespace {
+
+void requireLink(const PhysicsRobot& robot, const std::string& robot_name, const std::string& what,
+                 const std::string& link) {
+  if (!robot.hasLink(link)) {
+    throw LoadError("robot '" + robot_name + "': " + what + " names link '" + link +
+                    "' that does not exist");
+  }
+}
+
+size_t requireHinge(const PhysicsRobot& robot, const std::string& robot_name,
+                    const std::string& tag, const std::string& joint) {
+  const int index = robot.jointIndex(joint);
+  if (index < 0) {
+    throw LoadError("robot '" + robot_name + "': libgazebo_ros_diff_drive.so <" + tag +
+                    "> names joint '" + joint +
+                    "' that does not exist (or is not revolute/continuous)");
+  }
+  return static_cast<size_t>(index);
+}
+
+}  // namespace
+
+Simulation::Simulation(const WorldSpec& world, const SimConfig& cfg)
+    : impl_(std::make_unique<Impl>(world, cfg)) {
+  if (!(cfg.physics_step_s > 0)) {
+    throw std::invalid_argument("physics_step_s must be > 0, got " +
+                                std::to_string(cfg.physics_step_s));
+  }
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, const Pose3& pose) {
+  if (impl_->robots.count(name)) throw LoadError("a robot named '" + name + "' already exists");
+  if (!spec.urdf) throw LoadError("robot '" + name + "': the spec holds no parsed URDF");
+  auto r = std::make_unique<Impl::Robot>();
+  r->spec = spec;
+  r->T_world_spawn = toIsometry(pose);
+  RobotPlan plan = planRobot(spec);
+  r->spec.warnings.insert(r->spec.warnings.end(), plan.warnings.begin(), plan.warnings.end());
+  r->id = impl_->next_robot_id;
+  r->physics = std::make_unique<PhysicsRobot>(impl_->physics->dynamics(), r->id, std::move(plan),
+                                              r->T_world_spawn);
+  for (const RaySpec& s : spec.rays) requireLink(*r->physics, name, "ray sensor '" + s.name + "'", s.link);
+  for (const ImuSpec& s : spec.imus) requireLink(*r->physics, name, "IMU '" + s.name + "'", s.link);
+  for (const CameraSpec& s : spec.cameras) {
+    requireLink(*r->physics, name, "camera '" + s.name + "'", s.link);
+  }
+  double joint_state_rate_hz = kDefaultJointStateRateHz;
+  if (spec.diff_drive) {
+    const DiffDriveSpec& d = *spec.diff_drive;
+    const size_t left = requireHinge(*r->physics, name, "leftJoint", d.left_joint);
+    const size_t right = requireHinge(*r->physics, name, "rightJoint", d.right_joint);
+    r->drive.emplace(d, left, right);
+    joint_state_rate_hz = d.update_rate_hz;
+  }
+  r->imus.resize(spec.imus.size());
+  r->schedule = SensorSchedule(name, spec, joint_state_rate_hz);
+  impl_->seedSensors(name, r.get());
+  ++impl_->next_robot_id;
+  impl_->robots[name] = std::move(r);
+}
+
+bool Simulation::deleteRobot(const std::string& name) { return impl_->robots.erase(name) > 0; }
+
+std::vector<std::string> Simulation::robotNames() const {
+  std::vector<std::string> names;
+  for (const auto& r : impl_->robots) names.push_back(r.first);
+  return names;
+}
+
+const RobotSpec& Simulation::robotSpec(const std::string& name) const {
+  return impl_->robot(name).spec;
+}
+
+std::vector<DueSensor> Simulation::step() {
+  const double dt = impl_->cfg.physics_step_s;
+  const uint64_t k = impl_->steps + 1;
+  std::vector<DueSensor> due;
+  for (auto& entry : impl_->robots) {
+    Impl::Robot& r = *entry.second;
+    if (r.drive && r.schedule.driveDue(k, dt)) {
+      r.drive->updateMotors(r.physics.get(), (k - 1) * dt, dt);
+    }
+  }
+  impl_->physics->step(dt);
+  impl_->steps = k;
+  for (auto& entry : impl_->robots) {
+    Impl::Robot& r = *entry.second;
+    r.physics->updateJointAngles();
+    if (r.drive) r.drive->integrateEncoder(*r.physics, dt);
+    r.schedule.collectDue(k, dt, &due);
+  }
+  return due;
+}
+
+double Simulation::timeS() const { return impl_->steps * impl_->cfg.physics_step_s; }
+
+void Simulation::reset() {
+  // Bullet keeps contact, pair and broadphase state that moving bodies back
+  // does not clear; a fresh world built in spawn order replays a run exactly.
+  std::map<int, std::pair<std::string, Impl::Robot*>> by_id;
+  for (auto& entry : impl_->robots) {
+    entry.second->physics.reset();
+    by_id[entry.second->id] = {entry.first, entry.second.get()};
+  }
+  impl_->physics = std::make_unique<PhysicsWorld>(impl_->world);
+  for (auto& entry : by_id) {
+    Impl::Robot& r = *entry.second.second;
+    r.physics = std::make_unique<PhysicsRobot>(impl_->physics->dynamics(), r.id,
+                                               planRobot(r.spec), r.T_world_spawn);
+    if (r.drive) r.drive->reset();
+    impl_->seedSensors(entry.second.first, &r);
+  }
+  impl_->steps = 0;
+}
+
+void Simulation::setCmdVel(const std::string& robot, double linear_mps, double angular_radps) {
+  Impl::Robot& r = impl_->robot(robot);
+  if (r.drive) r.drive->setCommand(linear_mps, angular_radps);
+}
+
+Pose3 Simulation::modelPose(const std::string& robot) const {
+  const Impl::Robot& r = impl_->robot(robot);
+  return toPose3(r.physics->linkPose(r.physics->plan().bodies[0].root_link));
+}
+
+Twist3 Simulation::modelTwist(const std::string& robot) const {
+  const Impl::Robot& r = impl_->robot(robot);
+  return r.physics->linkTwist(r.physics->plan().bodies[0].root_link);
+}
+
+void Simulation::setModelState(const std::string& robot, const Pose3& pose, const Twist3& twist) {
+  Impl::Robot& r = impl_->robot(robot);
+  r.physics->moveRoot(toIsometry(pose), twist);
+  for (ImuSensor& imu : r.imus) imu.reset();
+}
+
+LaserScanData Simulation::readRay(const std::string& robot, size_t index) {
+  Impl::Robot& r = impl_->robot(robot);
+  const RaySpec& spec = r.spec.rays.at(index);
+  LaserScanData scan;
+  scan.time_s = timeS();
+  const Eigen::Isometry3d T_world_sensor = r.physics->linkPose(spec.link) * toIsometry(spec.pose_in_link);
+  castScan(*impl_->physics->dynamics(), T_world_sensor, spec, &r.ray_rngs[index], &scan);
+  return scan;
+}
+
+ImuData Simulation::readImu(const std::string& robot, size_t index) {
+  Impl::Robot& r = impl_->robot(robot);
+  const ImuSpec& spec = r.spec.imus.at(index);
+  const Twist3 v = r.physics->linkTwist(spec.link);
+  return r.imus[index].read(spec, r.physics->linkPose(spec.link), v.linear, v.angular,
+                            impl_->world.gravity, timeS(), &r.imu_rngs[index]);
+}
+
+OdometryData Simulation::readOdometry(const std::string& robot) {
+  Impl::Robot& r = impl_->robot(robot);
+  if (!r.drive) throw std::out_of_range("robot '" + robot + "' has no diff drive");
+  const DiffDriveSpec& d = *r.spec.diff_drive;
+  OdometryData odom;
+  odom.time_s = timeS();
+  odom.frame_id = d.odometry_frame;
+  odom.child_frame_id = d.robot_base_frame;
+  if (d.odometry_source == OdomSource::World) {
+    const std::string& root = r.physics->plan().bodies[0].root_link;
+    const Eigen::Isometry3d T_world_root = r.physics->linkPose(root);
+    odom.pose = toPose3(r.T_world_spawn.inverse() * T_world_root);
+    const Twist3 v = r.physics->linkTwist(root);
+    odom.twist_in_child.linear = T_world_root.linear().transpose() * v.linear;
+    odom.twist_in_child.angular = T_world_root.linear().transpose() * v.angular;
+  } else {
+    const Eigen::Vector3d& p = r.drive->encoderPose();
+    odom.pose.position = Eigen::Vector3d(p.x(), p.y(), 0);
+    odom.pose.orientation = Eigen::AngleAxisd(p.z(), Eigen::Vector3d::UnitZ());
+    odom.twist_in_child.linear = Eigen::Vector3d(r.drive->encoderLinearMps(), 0, 0);
+    odom.twist_in_child.angular = Eigen::Vector3d(0, 0, r.drive->encoderAngularRadps());
+  }
+  return odom;
+}
+
+JointStateData Simulation::readJointStates(const std::string& robot) const {
+  const Impl::Robot& r = impl_->robot(robot);
+  JointStateData js;
+  js.time_s = timeS();
+  const auto& joints = r.physics->plan().joints;
+  for (size_t i = 0; i < joints.size(); ++i) {
+    js.names.push_back(joints[i].name);
+    js.positions.push_back(r.physics->jointPosition(i));
+    js.velocities.push_back(r.physics->jointVelocity(i));
+    js.efforts.push_back(0.0);
+  }
+  return js;
+}
+
+std::vector<LinkPose> Simulation::linkPoses(const std::string& robot) const {
+  const Impl::Robot& r = impl_->robot(robot);
+  std::vector<LinkPose> poses;
+  for (const auto& link : r.physics->plan().body_of_link) {
+    poses.push_back({link.first, toPose3(r.physics->linkPose(link.first))});
+  }
+  return poses;
+}
+
+const WorldSpec& Simulation::world() const { return impl_->world; }
+
+}  // namespace bullet_sim

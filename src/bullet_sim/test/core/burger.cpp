@@ -1,0 +1,45 @@
+#include "burger.h"
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+namespace bullet_sim_test {
+
+const std::string& burgerUrdf() {
+  static const std::string urdf = [] {
+    const std::string ws = BULLET_SIM_WORKSPACE;
+    const std::string cmd = "ROS_PACKAGE_PATH=" + ws + " /usr/bin/python3 " + ws +
+                            "/src/xacro/xacro " + ws +
+                            "/turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+    if (!pipe) throw std::runtime_error("cannot run: " + cmd);
+    std::string out;
+    char buf[4096];
+    size_t n = 0;
+    while ((n = fread(buf, 1, sizeof(buf), pipe.get())) > 0) out.append(buf, n);
+    if (out.find("<robot") == std::string::npos) throw std::runtime_error("xacro failed: " + cmd);
+    return out;
+  }();
+  return urdf;
+}
+
+bullet_sim::RobotSpec burgerSpec() { return bullet_sim::parseRobot(burgerUrdf(), "burger"); }
+
+bullet_sim::WorldSpec flatWorld() {
+  return bullet_sim::loadWorldString(
+      "<sdf version='1.6'><world name='flat'><model name='ground'><static>true</static>"
+      "<link name='link'><collision name='c'><geometry><plane><normal>0 0 1</normal>"
+      "<size>100 100</size></plane></geometry></collision></link></model></world></sdf>",
+      "flat world");
+}
+
+std::string roundTrackPath() {
+  const std::string real =
+      std::string(BULLET_SIM_WORKSPACE) + "/src/turtlebot3_gazebo/worlds/roundTrack.world";
+  if (std::ifstream(real).good()) return real;
+  return std::string(BULLET_SIM_FIXTURES) + "/round_track.world";
+}
+
+}  // namespace bullet_sim_test

@@ -1,0 +1,16 @@
+#ifndef BULLET_SIM_TEST_ROUND_TRACK_H
+#define BULLET_SIM_TEST_ROUND_TRACK_H
+
+#include <Eigen/Core>
+
+namespace bullet_sim_test {
+
+/// Distance along a horizontal ray from `origin` (x, y) at world heading
+/// `heading_rad` to the first round-track wall, computed in 2D from the wall
+/// table of DESIGN.md (walls 0.015 m thick, length along their local y);
+/// +inf when no wall is within `max_range_m`.
+double wallDistance(const Eigen::Vector2d& origin, double heading_rad, double max_range_m);
+
+}  // namespace bullet_sim_test
+
+#endif  // BULLET_SIM_TEST_ROUND_TRACK_H

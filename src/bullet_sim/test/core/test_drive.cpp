@@ -1,0 +1,182 @@
+// Physics and diff-drive tests on the Burger, stepping the core by hand.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "bullet_sim/simulation.h"
+#include "burger.h"
+
+using namespace bullet_sim;
+
+namespace {
+
+constexpr double kDt = 0.001;
+
+double yawOf(const Eigen::Quaterniond& q) {
+  return std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
+}
+
+void run(Simulation* sim, double seconds) {
+  const long steps = std::lround(seconds / kDt);
+  for (long i = 0; i < steps; ++i) sim->step();
+}
+
+/// Heading accumulated step by step, so that turns beyond pi are measured.
+double turnFor(Simulation* sim, double seconds) {
+  double heading = 0, last = yawOf(sim->modelPose("burger").orientation);
+  const long steps = std::lround(seconds / kDt);
+  for (long i = 0; i < steps; ++i) {
+    sim->step();
+    const double now = yawOf(sim->modelPose("burger").orientation);
+    heading += std::remainder(now - last, 2 * M_PI);
+    last = now;
+  }
+  return heading;
+}
+
+double jointPosition(const JointStateData& js, const std::string& name) {
+  for (size_t i = 0; i < js.names.size(); ++i) {
+    if (js.names[i] == name) return js.positions[i];
+  }
+  ADD_FAILURE() << "no joint " << name;
+  return 0;
+}
+
+class BurgerOnFlatGround : public ::testing::Test {
+ protected:
+  BurgerOnFlatGround() : sim_(bullet_sim_test::flatWorld(), SimConfig()) {
+    sim_.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  }
+  Simulation sim_;
+};
+
+}  // namespace
+
+TEST_F(BurgerOnFlatGround, DrivesStraightOneMetreInFiveSeconds) {
+  sim_.setCmdVel("burger", 0.2, 0);
+  run(&sim_, 5.0);
+  const Pose3 p = sim_.modelPose("burger");
+  EXPECT_NEAR(p.position.x(), 1.0, 0.03);
+  EXPECT_LT(std::fabs(p.position.y()), 0.02);
+  EXPECT_NEAR(p.position.z(), 0.0, 0.005);
+}
+
+TEST_F(BurgerOnFlatGround, TurnsPiRadiansInPiSeconds) {
+  sim_.setCmdVel("burger", 0, 1.0);
+  const double heading = turnFor(&sim_, M_PI);
+  EXPECT_NEAR(heading, M_PI, 0.03 * M_PI);
+  EXPECT_LT(sim_.modelPose("burger").position.head<2>().norm(), 0.02);
+}
+
+TEST_F(BurgerOnFlatGround, WorldOdometryIsThePoseRelativeToTheSpawnPose) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  Pose3 spawn;
+  spawn.position = Eigen::Vector3d(1.0, -2.0, 0);
+  spawn.orientation = Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ());
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), spawn);
+  sim.setCmdVel("burger", 0.15, 0.5);
+  run(&sim, 3.0);
+  const OdometryData odom = sim.readOdometry("burger");
+  const Pose3 truth = sim.modelPose("burger");
+  // The true pose in the spawn frame, from the spawn pose by hand.
+  const Eigen::Vector2d d = truth.position.head<2>() - spawn.position.head<2>();
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  EXPECT_NEAR(odom.pose.position.x(), c * d.x() + s * d.y(), 1e-6);
+  EXPECT_NEAR(odom.pose.position.y(), -s * d.x() + c * d.y(), 1e-6);
+  EXPECT_NEAR(std::remainder(yawOf(odom.pose.orientation) - (yawOf(truth.orientation) - 0.7), 2 * M_PI),
+              0, 1e-6);
+  EXPECT_EQ(odom.frame_id, "odom");
+  EXPECT_EQ(odom.child_frame_id, "base_footprint");
+  EXPECT_NEAR(odom.twist_in_child.linear.x(), 0.15, 0.01);
+  EXPECT_NEAR(odom.twist_in_child.angular.z(), 0.5, 0.02);
+}
+
+TEST(EncoderOdometry, AgreesWithTheTruePose) {
+  RobotSpec spec = bullet_sim_test::burgerSpec();
+  spec.diff_drive->odometry_source = OdomSource::Encoder;
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", spec, Pose3());
+  sim.setCmdVel("burger", 0.2, 0.4);
+  run(&sim, 4.0);
+  const OdometryData odom = sim.readOdometry("burger");
+  const Pose3 truth = sim.modelPose("burger");
+  EXPECT_NEAR(odom.pose.position.x(), truth.position.x(), 0.03);
+  EXPECT_NEAR(odom.pose.position.y(), truth.position.y(), 0.03);
+  EXPECT_NEAR(yawOf(odom.pose.orientation), yawOf(truth.orientation), 0.05);
+}
+
+TEST_F(BurgerOnFlatGround, JointStatesCarryWheelsAndFlagAndTheFlagLagsInATurn) {
+  run(&sim_, 0.5);
+  const JointStateData before = sim_.readJointStates("burger");
+  ASSERT_EQ(before.names.size(), 3u);
+  EXPECT_EQ(before.names[0], "flag_pole_joint");
+  EXPECT_EQ(before.names[1], "wheel_left_joint");
+  EXPECT_EQ(before.names[2], "wheel_right_joint");
+  EXPECT_EQ(before.positions.size(), 3u);
+  EXPECT_EQ(before.velocities.size(), 3u);
+  EXPECT_EQ(before.efforts.size(), 3u);
+
+  sim_.setCmdVel("burger", 0, 1.0);
+  run(&sim_, 2.0);
+  const JointStateData after = sim_.readJointStates("burger");
+  // A free flag keeps its heading while the robot turns under it.
+  EXPECT_GT(std::fabs(jointPosition(after, "flag_pole_joint") -
+                      jointPosition(before, "flag_pole_joint")),
+            0.5);
+  // Turning left: the left wheel runs backwards, the right one forwards.
+  EXPECT_LT(jointPosition(after, "wheel_left_joint"), jointPosition(before, "wheel_left_joint") - 1);
+  EXPECT_GT(jointPosition(after, "wheel_right_joint"), jointPosition(before, "wheel_right_joint") + 1);
+}
+
+TEST(WallContact, FullSpeedIntoAWallForTenSecondsStopsInFrontOfIt) {
+  Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), SimConfig());
+  Pose3 spawn;  // in the west lane, facing the lane's west wall (centre x -0.80941)
+  spawn.orientation = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ());
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), spawn);
+  sim.setCmdVel("burger", 0.22, 0);
+  const double wall_face_x = -0.80941 + 0.015 / 2;
+  double min_x = 0;
+  for (int i = 0; i < 10000; ++i) {
+    sim.step();
+    for (const LinkPose& link : sim.linkPoses("burger")) {
+      min_x = std::min(min_x, link.pose.position.x());
+    }
+  }
+  EXPECT_GT(min_x, wall_face_x);  // no link origin ever beyond the wall
+  const Pose3 p = sim.modelPose("burger");
+  // The base's front face is 0.038 m ahead of base_footprint: it got there.
+  EXPECT_LT(p.position.x(), wall_face_x + 0.038 + 0.03);
+  EXPECT_GT(p.position.x(), wall_face_x + 0.038 - 0.01);
+  EXPECT_NEAR(p.position.z(), 0, 0.02);  // still on its wheels
+}
+
+TEST(Determinism, SameSeedSameCommandsGiveIdenticalResults) {
+  auto runOnce = [](uint64_t seed) {
+    SimConfig cfg;
+    cfg.seed = seed;
+    Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
+    Pose3 spawn;
+    spawn.orientation = Eigen::AngleAxisd(1.5675, Eigen::Vector3d::UnitZ());
+    sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), spawn);
+    sim.setCmdVel("burger", 0.2, 0.3);
+    run(&sim, 2.0);
+    return std::make_pair(sim.modelPose("burger"), sim.readRay("burger", 0).ranges);
+  };
+  const auto a = runOnce(7), b = runOnce(7), c = runOnce(8);
+  EXPECT_EQ(a.first.position, b.first.position);
+  EXPECT_EQ(a.first.orientation.coeffs(), b.first.orientation.coeffs());
+  EXPECT_EQ(a.second, b.second);
+  EXPECT_NE(a.second, c.second);  // the seed reaches the lidar noise
+}
+
+TEST_F(BurgerOnFlatGround, ResetReplaysIdentically) {
+  sim_.setCmdVel("burger", 0.2, 0.5);
+  run(&sim_, 1.0);
+  const Pose3 first = sim_.modelPose("burger");
+  sim_.reset();
+  EXPECT_EQ(sim_.timeS(), 0.0);
+  EXPECT_LT(sim_.modelPose("burger").position.norm(), 1e-9);
+  sim_.setCmdVel("burger", 0.2, 0.5);
+  run(&sim_, 1.0);
+  EXPECT_NEAR((sim_.modelPose("burger").position - first.position).norm(), 0, 1e-9);
+}

@@ -1,0 +1,132 @@
+// Sensor tests: lidar against the wall table, IMU, sensor scheduling.
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "bullet_sim/simulation.h"
+#include "burger.h"
+#include "round_track.h"
+
+using namespace bullet_sim;
+
+namespace {
+
+constexpr double kSpawnYaw = 1.5675;
+// base_footprint -> base_scan in the Burger description: base_joint z 0.010,
+// scan_joint x -0.032 z 0.172.
+constexpr double kScanOffsetX = -0.032;
+
+void run(Simulation* sim, int steps) {
+  for (int i = 0; i < steps; ++i) sim->step();
+}
+
+class BurgerOnRoundTrack : public ::testing::Test {
+ protected:
+  BurgerOnRoundTrack() : sim_(loadWorldFile(bullet_sim_test::roundTrackPath()), SimConfig()) {
+    Pose3 spawn;
+    spawn.orientation = Eigen::AngleAxisd(kSpawnYaw, Eigen::Vector3d::UnitZ());
+    sim_.spawnRobot("burger", bullet_sim_test::burgerSpec(), spawn);
+  }
+  /// Expected range of scan ray i from the wall table, at the spawn pose.
+  double expectedRange(const LaserScanData& scan, int i) const {
+    const Eigen::Vector2d origin(kScanOffsetX * std::cos(kSpawnYaw), kScanOffsetX * std::sin(kSpawnYaw));
+    return bullet_sim_test::wallDistance(origin, kSpawnYaw + scan.angle_min + i * scan.angle_increment,
+                                         scan.range_max);
+  }
+  Simulation sim_;
+};
+
+}  // namespace
+
+TEST_F(BurgerOnRoundTrack, LidarRangesToTheLaneWallsMatchTheWallTable) {
+  run(&sim_, 200);
+  const LaserScanData scan = sim_.readRay("burger", 0);
+  ASSERT_EQ(scan.ranges.size(), 360u);
+  EXPECT_EQ(scan.frame_id, "base_scan");
+  EXPECT_NEAR(scan.angle_increment, 6.28319 / 359, 1e-12);
+  // Left (+90 deg) and right (-90 deg = 270 deg): the lane's two walls.
+  for (int centre : {90, 270}) {
+    for (int i = centre - 10; i <= centre + 10; ++i) {
+      const double expected = expectedRange(scan, i);
+      ASSERT_TRUE(std::isfinite(expected)) << "ray " << i;
+      EXPECT_NEAR(scan.ranges[i], expected, 0.04) << "ray " << i;
+    }
+  }
+  EXPECT_NEAR(scan.ranges[90], 0.80, 0.04);   // west wall, 0.8 m to the left
+  EXPECT_NEAR(scan.ranges[270], 0.51, 0.04);  // inner wall, 0.5 m to the right
+}
+
+TEST_F(BurgerOnRoundTrack, WholeScanAgreesWithTheWallTable) {
+  run(&sim_, 200);
+  const LaserScanData scan = sim_.readRay("burger", 0);
+  int compared = 0, within = 0, inf_agree = 0, inf_expected = 0;
+  for (int i = 1; i + 1 < 360; ++i) {
+    const double e = expectedRange(scan, i);
+    if (!std::isfinite(e)) {
+      ++inf_expected;
+      if (std::isinf(scan.ranges[i])) ++inf_agree;
+      continue;
+    }
+    // Skip rays at a wall's end, where a small heading error jumps walls.
+    if (std::fabs(expectedRange(scan, i - 1) - e) > 0.1 || std::fabs(expectedRange(scan, i + 1) - e) > 0.1) {
+      continue;
+    }
+    ++compared;
+    if (std::fabs(scan.ranges[i] - e) < 0.04) ++within;
+  }
+  EXPECT_GT(compared, 200);
+  EXPECT_GE(within, compared * 99 / 100);
+  EXPECT_GE(inf_agree, inf_expected * 95 / 100);
+}
+
+TEST(Lidar, NothingInRangeReadsInfinityAndOwnPolesAreNotSeen) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  run(&sim, 100);
+  const LaserScanData scan = sim.readRay("burger", 0);
+  for (size_t i = 0; i < scan.ranges.size(); ++i) {
+    EXPECT_TRUE(std::isinf(scan.ranges[i])) << "ray " << i << " = " << scan.ranges[i];
+  }
+}
+
+TEST_F(BurgerOnRoundTrack, ImuReadsGravityUpwardsAtRest) {
+  run(&sim_, 1000);
+  sim_.readImu("burger", 0);
+  run(&sim_, 5);
+  const ImuData imu = sim_.readImu("burger", 0);
+  EXPECT_EQ(imu.frame_id, "imu_link");
+  EXPECT_NEAR(imu.linear_acceleration.z(), 9.8, 0.05);
+  // The Burger rests tilted back onto its caster (~1 degree), so gravity shows
+  // a little on the IMU's x: in the world frame it is straight up.
+  const Eigen::Vector3d accel_world = imu.orientation * imu.linear_acceleration;
+  EXPECT_NEAR(accel_world.x(), 0, 0.01);
+  EXPECT_NEAR(accel_world.y(), 0, 0.01);
+  EXPECT_NEAR(accel_world.z(), 9.8, 0.01);
+  EXPECT_NEAR(imu.angular_velocity.norm(), 0, 0.01);
+  const double yaw = 2 * std::atan2(imu.orientation.z(), imu.orientation.w());
+  EXPECT_NEAR(yaw, kSpawnYaw, 0.01);
+}
+
+TEST_F(BurgerOnRoundTrack, ImuYawRateMatchesTheTurnCommand) {
+  sim_.setCmdVel("burger", 0, 1.0);
+  run(&sim_, 1500);
+  const ImuData imu = sim_.readImu("burger", 0);
+  EXPECT_NEAR(imu.angular_velocity.z(), 1.0, 0.03);
+}
+
+TEST_F(BurgerOnRoundTrack, StepReportsEachSensorAtItsRate) {
+  std::map<SensorKind, int> count;
+  for (int i = 0; i < 1000; ++i) {
+    for (const DueSensor& due : sim_.step()) {
+      EXPECT_EQ(due.robot, "burger");
+      ++count[due.kind];
+    }
+  }
+  EXPECT_EQ(count[SensorKind::Ray], 5);
+  EXPECT_EQ(count[SensorKind::Imu], 200);
+  EXPECT_EQ(count[SensorKind::Camera], 30);
+  EXPECT_EQ(count[SensorKind::Odometry], 30);
+  EXPECT_EQ(count[SensorKind::JointStates], 30);
+}
