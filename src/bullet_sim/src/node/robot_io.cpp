@@ -39,9 +39,6 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
     scan_pubs_.push_back(nh.advertise<sensor_msgs::LaserScan>(ray.topic, 5));
   for (const bullet_sim::ImuSpec& imu : spec.imus)
     imu_pubs_.push_back(nh.advertise<sensor_msgs::Imu>(imu.topic, 50));
-  for (const bullet_sim::CameraSpec& camera : spec.cameras)
-    ROS_WARN("robot %s: camera '%s' on link %s is simulated but not published by this node",
-             robot_.c_str(), camera.name.c_str(), camera.link.c_str());
   joint_state_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
   if (spec.diff_drive) {
     odom_pub_ = nh.advertise<nav_msgs::Odometry>(spec.diff_drive->odometry_topic, 10);
@@ -68,7 +65,7 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       if (joint_state_pub_.getNumSubscribers() > 0)
         joint_state_pub_.publish(toMsg(sim_.readJointStates(robot_)));
       break;
-    case bullet_sim::SensorKind::Camera:
+    case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
   }
 }

@@ -12,7 +12,7 @@ constexpr std::chrono::milliseconds kClockWallPeriod{1};
 }  // namespace
 
 SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh, bool paused)
-    : sim_(sim), nh_(nh), paused_(paused) {
+    : sim_(sim), nh_(nh), cameras_(sim), paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
 }
 
@@ -21,12 +21,14 @@ void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec
   sim_.spawnRobot(name, spec, pose);
   const ros::NodeHandle robot_nh(nh_, robot_namespace);
   robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh);
+  cameras_.addRobot(name, robot_nh);
   spawn_poses_[name] = pose;
 }
 
 bool SimRunner::remove(const std::string& name) {
   if (!sim_.deleteRobot(name)) return false;
   robots_.erase(name);
+  cameras_.removeRobot(name);
   spawn_poses_.erase(name);
   return true;
 }
@@ -41,6 +43,10 @@ void SimRunner::step() {
   // A reading stamped t goes out after the clock says t, so no listener sees the future.
   if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
   for (const bullet_sim::DueSensor& sensor : due) {
+    if (sensor.kind == bullet_sim::SensorKind::Camera) {
+      cameras_.publish(sensor);
+      continue;
+    }
     const auto robot = robots_.find(sensor.robot);
     if (robot != robots_.end()) robot->second->publish(sensor);
   }

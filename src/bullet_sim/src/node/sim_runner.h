@@ -1,6 +1,7 @@
 // Steps the simulation and hands what falls due to the ROS side: /clock and robot sensors.
 #pragma once
 
+#include "camera_io.h"
 #include "robot_io.h"
 
 #include <bullet_sim/simulation.h>
@@ -43,6 +44,7 @@ class SimRunner {
   ros::NodeHandle nh_;
   ros::Publisher clock_pub_;
   std::map<std::string, std::unique_ptr<RobotIo>> robots_;
+  CameraIo cameras_;
   std::map<std::string, bullet_sim::Pose3> spawn_poses_;
   std::chrono::steady_clock::time_point last_clock_wall_;
   bool paused_;
