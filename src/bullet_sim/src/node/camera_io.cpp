@@ -1,0 +1,102 @@
+#include "camera_io.h"
+
+#include <bullet_sim/errors.h>
+
+#include <ros/console.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+
+#include <boost/make_shared.hpp>
+
+#include <algorithm>
+#include <exception>
+
+namespace bullet_sim_node {
+namespace {
+
+std::string join(const std::string& ns, const std::string& name) {
+  return ns.empty() ? name : ns + "/" + name;
+}
+
+sensor_msgs::ImagePtr toMsg(bullet_sim::ImageData* image) {
+  auto msg = boost::make_shared<sensor_msgs::Image>();
+  msg->header.stamp.fromSec(image->time_s);
+  msg->header.frame_id = image->frame_id;
+  msg->width = static_cast<uint32_t>(image->width);
+  msg->height = static_cast<uint32_t>(image->height);
+  msg->encoding = image->encoding;
+  msg->is_bigendian = 0;
+  msg->step = static_cast<uint32_t>(image->step);
+  msg->data.swap(image->data);
+  return msg;
+}
+
+sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info) {
+  auto msg = boost::make_shared<sensor_msgs::CameraInfo>();
+  msg->header.stamp.fromSec(info.time_s);
+  msg->header.frame_id = info.frame_id;
+  msg->width = static_cast<uint32_t>(info.width);
+  msg->height = static_cast<uint32_t>(info.height);
+  msg->distortion_model = info.distortion_model;
+  msg->D.assign(info.D.begin(), info.D.end());
+  std::copy(info.K.begin(), info.K.end(), msg->K.begin());
+  std::copy(info.R.begin(), info.R.end(), msg->R.begin());
+  std::copy(info.P.begin(), info.P.end(), msg->P.begin());
+  return msg;
+}
+
+}  // namespace
+
+CameraIo::CameraIo(const bullet_sim::Simulation& sim) : sim_(sim), renderer_(sim) {
+  logNewRendererWarnings();
+}
+
+void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_nh) {
+  ros::NodeHandle nh(robot_nh);
+  std::vector<Topics>& topics = cameras_[robot];
+  topics.clear();
+  for (const bullet_sim::CameraSpec& camera : sim_.robotSpec(robot).cameras) {
+    topics.emplace_back();
+    try {
+      bullet_sim::validateCamera(camera);
+    } catch (const bullet_sim::LoadError& error) {
+      ROS_ERROR("robot %s: %s: not published", robot.c_str(), error.what());
+      continue;
+    }
+    topics.back().image =
+        nh.advertise<sensor_msgs::Image>(join(camera.camera_name, camera.image_topic), 2);
+    topics.back().info =
+        nh.advertise<sensor_msgs::CameraInfo>(join(camera.camera_name, camera.info_topic), 2);
+  }
+}
+
+void CameraIo::removeRobot(const std::string& robot) { cameras_.erase(robot); }
+
+void CameraIo::publish(const bullet_sim::DueSensor& due) {
+  const auto robot = cameras_.find(due.robot);
+  if (robot == cameras_.end() || due.index >= robot->second.size()) return;
+  Topics& topics = robot->second[due.index];
+  const bool image_wanted = topics.image && topics.image.getNumSubscribers() > 0;
+  const bool info_wanted = topics.info && topics.info.getNumSubscribers() > 0;
+  if (!image_wanted && !info_wanted) return;
+  const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
+  if (info_wanted) topics.info.publish(toMsg(bullet_sim::cameraInfo(camera, sim_.timeS())));
+  if (!image_wanted) return;
+  try {
+    bullet_sim::ImageData frame;
+    renderer_.render(due.robot, due.index, &frame);
+    topics.image.publish(toMsg(&frame));
+  } catch (const std::exception& error) {
+    ROS_ERROR_THROTTLE(5.0, "robot %s: camera '%s' not rendered: %s", due.robot.c_str(),
+                       camera.name.c_str(), error.what());
+  }
+  logNewRendererWarnings();
+}
+
+void CameraIo::logNewRendererWarnings() {
+  const std::vector<std::string>& warnings = renderer_.warnings();
+  for (; warnings_logged_ < warnings.size(); ++warnings_logged_)
+    ROS_WARN("camera: %s", warnings[warnings_logged_].c_str());
+}
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,50 @@
+// The ROS side of the simulated cameras: image and camera_info publishers of every robot.
+#pragma once
+
+#include <bullet_sim/camera_renderer.h>
+#include <bullet_sim/simulation.h>
+
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace bullet_sim_node {
+
+/// Publishes `<cameraName>/<imageTopicName>` (sensor_msgs/Image) and
+/// `<cameraName>/<cameraInfoTopicName>` (sensor_msgs/CameraInfo) for each camera of each
+/// robot when the simulation says it is due, stamped with sim time. A frame is rendered
+/// only while someone subscribes to the image, camera_info is filled only while someone
+/// subscribes to it: cameras nobody watches cost nothing. One renderer (one scene with
+/// every robot) serves all cameras.
+class CameraIo {
+ public:
+  /// `sim` must outlive this object.
+  explicit CameraIo(const bullet_sim::Simulation& sim);
+  CameraIo(const CameraIo&) = delete;
+  CameraIo& operator=(const CameraIo&) = delete;
+
+  /// Advertises the topics of a spawned robot's cameras, resolved in `robot_nh`. A camera
+  /// the renderer cannot draw (bad size, fov or format) is reported and left out.
+  void addRobot(const std::string& robot, const ros::NodeHandle& robot_nh);
+  void removeRobot(const std::string& robot);
+
+  /// Publishes a due camera (due.kind == SensorKind::Camera) if it is watched.
+  void publish(const bullet_sim::DueSensor& due);
+
+ private:
+  struct Topics {
+    ros::Publisher image, info;
+  };
+
+  void logNewRendererWarnings();
+
+  const bullet_sim::Simulation& sim_;
+  bullet_sim::CameraRenderer renderer_;
+  std::map<std::string, std::vector<Topics>> cameras_;  ///< per robot, by camera index
+  size_t warnings_logged_ = 0;
+};
+
+}  // namespace bullet_sim_node
