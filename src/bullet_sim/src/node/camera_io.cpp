@@ -14,6 +14,11 @@
 namespace bullet_sim_node {
 namespace {
 
+// Outgoing messages kept per subscriber. An image is 0.9 MB at 640 x 480: a few absorb a
+// short stall of a subscriber; one that falls further behind loses frames, not memory.
+constexpr uint32_t kImageQueueSize = 5;
+constexpr uint32_t kInfoQueueSize = 50;
+
 std::string join(const std::string& ns, const std::string& name) {
   return ns.empty() ? name : ns + "/" + name;
 }
@@ -63,10 +68,10 @@ void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_n
       ROS_ERROR("robot %s: %s: not published", robot.c_str(), error.what());
       continue;
     }
-    topics.back().image =
-        nh.advertise<sensor_msgs::Image>(join(camera.camera_name, camera.image_topic), 2);
-    topics.back().info =
-        nh.advertise<sensor_msgs::CameraInfo>(join(camera.camera_name, camera.info_topic), 2);
+    topics.back().image = nh.advertise<sensor_msgs::Image>(
+        join(camera.camera_name, camera.image_topic), kImageQueueSize);
+    topics.back().info = nh.advertise<sensor_msgs::CameraInfo>(
+        join(camera.camera_name, camera.info_topic), kInfoQueueSize);
   }
 }
 

@@ -64,9 +64,10 @@ class Camera(unittest.TestCase):
         print("camera rate %.2f Hz from stamps, intervals %.4f..%.4f s" %
               (rate, min(intervals), max(intervals)))
         self.assertAlmostEqual(rate, RATE_HZ, delta=0.1 * RATE_HZ)
-        for interval in intervals:
-            self.assertGreater(interval, 0)
-            self.assertAlmostEqual(interval, 1 / RATE_HZ, delta=0.1 / RATE_HZ)
+        # Never faster than configured; a frame a loaded machine drops only lowers the mean.
+        self.assertGreater(min(intervals), 0.9 / RATE_HZ)
+        self.assertAlmostEqual(sorted(intervals)[len(intervals) // 2], 1 / RATE_HZ,
+                               delta=0.1 / RATE_HZ)
 
     def test_image_format(self):
         self.assertTrue(self.images)
