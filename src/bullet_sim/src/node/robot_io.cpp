@@ -13,6 +13,10 @@
 namespace bullet_sim_node {
 namespace {
 
+// Outgoing messages kept per subscriber: at 100x real time a 200 Hz IMU sends 20000
+// messages per wall second, and a short stall of a subscriber must not lose any.
+constexpr uint32_t kQueueSize = 200;
+
 struct Field {
   const char* name;
   double value;
@@ -36,12 +40,12 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
   ros::NodeHandle nh(robot_nh);
   const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
   for (const bullet_sim::RaySpec& ray : spec.rays)
-    scan_pubs_.push_back(nh.advertise<sensor_msgs::LaserScan>(ray.topic, 5));
+    scan_pubs_.push_back(nh.advertise<sensor_msgs::LaserScan>(ray.topic, kQueueSize));
   for (const bullet_sim::ImuSpec& imu : spec.imus)
-    imu_pubs_.push_back(nh.advertise<sensor_msgs::Imu>(imu.topic, 50));
-  joint_state_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+    imu_pubs_.push_back(nh.advertise<sensor_msgs::Imu>(imu.topic, kQueueSize));
+  joint_state_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", kQueueSize);
   if (spec.diff_drive) {
-    odom_pub_ = nh.advertise<nav_msgs::Odometry>(spec.diff_drive->odometry_topic, 10);
+    odom_pub_ = nh.advertise<nav_msgs::Odometry>(spec.diff_drive->odometry_topic, kQueueSize);
     publish_odom_tf_ = spec.diff_drive->publish_odom_tf;
     cmd_vel_sub_ = nh.subscribe(spec.diff_drive->command_topic, 1, &RobotIo::onCmdVel, this,
                                 ros::TransportHints().tcpNoDelay());

@@ -1,0 +1,64 @@
+#!/usr/bin/python3
+"""bullet_sim_node on bad input: it exits with a non-zero code (not by a signal) and
+prints the error naming what is wrong, for each fixture."""
+import os
+import subprocess
+import unittest
+
+import rostest
+from roslib.packages import find_node
+from rospkg import RosPack
+
+FIXTURES = os.path.join(RosPack().get_path("bullet_sim"), "test", "ros", "fixtures")
+GOOD_WORLD = os.path.join(FIXTURES, "flat.world")
+TIMEOUT_S = 60
+
+
+def run_node(name, *args):
+    """Runs the node to its end; returns (exit code, stdout + stderr)."""
+    node = find_node("bullet_sim", "bullet_sim_node")[0]
+    result = subprocess.run([node, "__name:=" + name] + list(args), stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, timeout=TIMEOUT_S, text=True)
+    return result.returncode, result.stdout
+
+
+class BadInput(unittest.TestCase):
+    def assertFailsWith(self, code, output, *fragments):
+        self.assertGreater(code, 0, "exit code %d (negative: killed by a signal)\n%s"
+                           % (code, output))
+        self.assertIn("FATAL", output)
+        for fragment in fragments:
+            self.assertIn(fragment, output)
+
+    def test_missing_world_file(self):
+        missing = os.path.join(FIXTURES, "no_such.world")
+        code, output = run_node("missing_world", "_world_file:=" + missing)
+        self.assertFailsWith(code, output, missing, "does not exist")
+
+    def test_malformed_world(self):
+        malformed = os.path.join(FIXTURES, "malformed.world")
+        code, output = run_node("malformed_world", "_world_file:=" + malformed)
+        self.assertFailsWith(code, output, malformed, "invalid SDF")
+
+    def test_urdf_with_two_roots(self):
+        code, output = run_node("two_roots", "_world_file:=" + GOOD_WORLD,
+                                "robot_description:=/two_roots_description")
+        self.assertFailsWith(code, output, "robot_description", "Two root links")
+
+    def test_missing_robot_description(self):
+        code, output = run_node("no_description", "_world_file:=" + GOOD_WORLD,
+                                "robot_description:=/not_set")
+        self.assertFailsWith(code, output, "/not_set", "is not set")
+
+    def test_missing_world_parameter(self):
+        code, output = run_node("no_world")
+        self.assertFailsWith(code, output, "world_file", "is not set")
+
+    def test_invalid_real_time_factor(self):
+        code, output = run_node("bad_factor", "_world_file:=" + GOOD_WORLD,
+                                "_real_time_factor:=-2.0")
+        self.assertFailsWith(code, output, "real_time_factor", "-2")
+
+
+if __name__ == "__main__":
+    rostest.rosrun("bullet_sim", "bad_input", BadInput)
