@@ -1,0 +1,13 @@
+#!/bin/bash
+# `make bench`: runs the workspace's benchmarks one after the other (they are not
+# timed tests: each prints its figures, the real-time factor last).
+set -uo pipefail
+cd "$(dirname "$0")"
+status=0
+echo "== sim_rtf.sh: bullet_sim on the round track, every sensor subscribed"
+./sim_rtf.sh || status=1
+if [[ -x sim_camera_cost.py ]]; then
+  echo "== sim_camera_cost.py: camera frame cost in bullet_sim_node"
+  ./sim_camera_cost.py || status=1
+fi
+exit $status

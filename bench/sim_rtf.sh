@@ -1,0 +1,60 @@
+#!/bin/bash
+# Benchmark of bullet_sim: the headless round-track scenario (Burger at the spawn pose,
+# 1 kHz physics, lidar, IMU, odometry, tf, joint states and /clock all published to a
+# subscriber) run as fast as possible for a fixed sim time. Prints the sensor rates (sim
+# time), a PyBullet comparison when pybullet is importable, and the real-time factor as
+# the last line.
+# Usage: bench/sim_rtf.sh [SIM_SECONDS]   (default 30; needs a built devel/ space,
+#        or BENCH_DEVEL=/path/to/devel)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
+SIM_S="${1:-30}"
+WARMUP_S=1
+PORT="${BENCH_ROS_PORT:-11457}"
+DEVEL="${BENCH_DEVEL:-$PWD/devel}"
+WORLD="$PWD/src/turtlebot3_gazebo/worlds/roundTrack.world"
+WORK="$(mktemp -d)"
+set +u  # the catkin setup scripts read unset variables
+# shellcheck disable=SC1091
+source "$DEVEL/setup.bash"
+set -u
+export ROS_MASTER_URI="http://localhost:$PORT" ROS_HOME="$WORK/ros_home"
+
+pids=()
+cleanup() {
+  for pid in "${pids[@]}"; do kill -INT "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+  rm -rf "$WORK"
+}
+trap cleanup EXIT
+
+if rosparam list > /dev/null 2>&1; then
+  echo "a ROS master already runs on port $PORT: set BENCH_ROS_PORT to a free port"; exit 1
+fi
+roscore -p "$PORT" > "$WORK/roscore.log" 2>&1 &
+pids+=($!)
+for _ in $(seq 100); do rosparam list > /dev/null 2>&1 && break; sleep 0.1; done
+rosparam list > /dev/null || { echo "roscore did not start on port $PORT"; exit 1; }
+
+rosrun xacro xacro turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro > "$WORK/burger.urdf"
+rosparam set robot_description -t "$WORK/burger.urdf"
+rosrun bullet_sim bullet_sim_node _world_file:="$WORLD" _real_time_factor:=0 \
+  _spawn_yaw:=1.5675 _paused:=true > "$WORK/node.log" 2>&1 &
+node_pid=$!
+pids+=("$node_pid")
+
+echo "bullet_sim, round track, ${SIM_S} s of sim time after ${WARMUP_S} s warm-up:"
+rosrun bullet_sim bench_rate_listener "$WARMUP_S" "$SIM_S" > "$WORK/rates.txt"
+kill -INT "$node_pid"
+wait "$node_pid" || true
+head -n -1 "$WORK/rates.txt"
+rtf="$(tail -n 1 "$WORK/rates.txt" | awk '{print $NF}')"
+if /usr/bin/python3 -c "import pybullet" 2>/dev/null; then
+  pyb="$(bench/pybullet_rtf.py "$WORK/burger.urdf" "$WORLD" "$SIM_S" 2>/dev/null | tail -n 1)"
+  pyb_rtf="$(awk '{print $4}' <<< "$pyb")"
+  echo "$pyb; bullet_sim/pybullet = $(awk -v a="$rtf" -v b="$pyb_rtf" 'BEGIN{printf "%.1f", a/b}')x"
+else
+  echo "pybullet is not importable (/usr/bin/python3 -m pip install --user pybullet): no comparison"
+fi
+echo "real-time factor $rtf"
