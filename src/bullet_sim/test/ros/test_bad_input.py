@@ -1,9 +1,14 @@
 #!/usr/bin/python3
 """bullet_sim_node on bad input: it exits with a non-zero code (not by a signal) and
-prints the error naming what is wrong, for each fixture."""
+prints the error naming what is wrong, for each fixture. On good input it runs until
+SIGINT and then exits cleanly with code 0."""
 import os
+import signal
 import subprocess
+import time
 import unittest
+
+import rosgraph
 
 import rostest
 from roslib.packages import find_node
@@ -58,6 +63,23 @@ class BadInput(unittest.TestCase):
         code, output = run_node("bad_factor", "_world_file:=" + GOOD_WORLD,
                                 "_real_time_factor:=-2.0")
         self.assertFailsWith(code, output, "real_time_factor", "-2")
+
+    def test_sigint_ends_a_running_node_cleanly(self):
+        node = find_node("bullet_sim", "bullet_sim_node")[0]
+        process = subprocess.Popen([node, "__name:=interrupted", "_world_file:=" + GOOD_WORLD,
+                                    "/clock:=/interrupted_clock"],
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        master = rosgraph.Master("/bad_input_test")
+        deadline = time.monotonic() + TIMEOUT_S
+        while ["/interrupted_clock", "rosgraph_msgs/Clock"] not in master.getPublishedTopics(""):
+            if process.poll() is not None:
+                self.fail("the node ended early: " + process.stdout.read())
+            self.assertLess(time.monotonic(), deadline, "the node did not advertise /clock")
+            time.sleep(0.05)
+        process.send_signal(signal.SIGINT)
+        output, _ = process.communicate(timeout=TIMEOUT_S)
+        self.assertEqual(process.returncode, 0, output)
+        self.assertNotIn("FATAL", output)
 
 
 if __name__ == "__main__":
