@@ -5,11 +5,13 @@
 //
 // Usage: bullet_sim_bench <robot.urdf> <world.sdf> [sim_seconds]
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
@@ -40,17 +42,25 @@ int main(int argc, char** argv) {
     spawn.orientation = Eigen::AngleAxisd(1.5675, Eigen::Vector3d::UnitZ());
     sim.spawnRobot("robot", robot, spawn);
 
+    using Clock = std::chrono::steady_clock;
     size_t reads[5] = {0, 0, 0, 0, 0};
-    double checksum = 0;
-    const auto start = std::chrono::steady_clock::now();
+    double read_s[5] = {0, 0, 0, 0, 0};
+    double physics_s = 0, checksum = 0;
+    const std::clock_t cpu_start = std::clock();
+    const auto start = Clock::now();
     while (sim.timeS() < sim_seconds) {
       // A slow weave so that contacts, motors and the flag all stay busy.
       sim.setCmdVel("robot", 0.1, 0.5 * std::sin(sim.timeS()));
-      for (const bullet_sim::DueSensor& due : sim.step()) {
-        ++reads[static_cast<int>(due.kind)];
+      const auto before_step = Clock::now();
+      const std::vector<bullet_sim::DueSensor> due_now = sim.step();
+      auto t = Clock::now();
+      physics_s += std::chrono::duration<double>(t - before_step).count();
+      for (const bullet_sim::DueSensor& due : due_now) {
+        const int kind = static_cast<int>(due.kind);
+        ++reads[kind];
         switch (due.kind) {
           case bullet_sim::SensorKind::Ray:
-            checksum += sim.readRay(due.robot, due.index).ranges[0];
+            checksum += sim.readRay(due.robot, due.index).ranges.size();
             break;
           case bullet_sim::SensorKind::Imu:
             checksum += sim.readImu(due.robot, due.index).linear_acceleration.z();
@@ -65,12 +75,24 @@ int main(int argc, char** argv) {
           case bullet_sim::SensorKind::Camera:
             break;
         }
+        const auto after = Clock::now();
+        read_s[kind] += std::chrono::duration<double>(after - t).count();
+        t = after;
       }
     }
-    const double wall_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("reads: ray %zu, imu %zu, odom %zu, joint_states %zu (checksum %g)\n", reads[0],
-                reads[1], reads[3], reads[4], checksum);
+    const double wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+    const double cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    const char* names[5] = {"lidar", "imu", "camera", "odometry+link poses", "joint states"};
+    std::printf("physics: %.2f us per %.0f us step\n", 1e6 * physics_s / (sim.timeS() / 1e-3),
+                1e3);
+    for (int k = 0; k < 5; ++k) {
+      if (reads[k] == 0) continue;
+      std::printf("%s: %zu reads, %.2f us each, %.1f%% of the run\n", names[k], reads[k],
+                  1e6 * read_s[k] / reads[k], 100.0 * read_s[k] / wall_s);
+    }
+    std::printf("checksum %g\n", checksum);
+    std::printf("process CPU time %.3f s: real-time factor per CPU second %.1f\n", cpu_s,
+                sim.timeS() / cpu_s);
     std::printf("sim %.1f s in %.3f s wall: real-time factor %.1f\n", sim.timeS(), wall_s,
                 sim.timeS() / wall_s);
   } catch (const std::exception& e) {

@@ -77,7 +77,9 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
     body.shape = makeShape(plan.collisions[0]);
     body.material.child_friction.push_back(plan.collisions[0].friction);
   } else {
-    auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(plan.collisions.size()));
+    // A robot body has a handful of parts: a linear scan beats a child AABB tree.
+    auto compound =
+        std::make_unique<btCompoundShape>(false, static_cast<int>(plan.collisions.size()));
     for (const CollisionPlan& c : plan.collisions) {
       body.children.push_back(makeShape(c));
       compound->addChildShape(toBt(body.T_com_root * c.T_root_geom), body.children.back().get());

@@ -1,6 +1,7 @@
 #include "physics_world.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "bullet_convert.h"
 #include "physics_robot.h"
@@ -11,6 +12,9 @@ namespace {
 
 constexpr double kMarginM = 0.0005;
 constexpr double kStaticFriction = 1.0;
+/// How far above a ground plane its bounding box reaches: parts nearer than
+/// this are tested for contact every step.
+constexpr double kGroundSlabM = 0.01;
 
 double frictionOf(const btCollisionObjectWrapper* w, int child_index) {
   const btCollisionObject* obj = w->getCollisionObject();
@@ -28,6 +32,25 @@ bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int
   return true;
 }
 
+/// A ground plane whose bounding box stops just above the plane when its
+/// normal is a world axis: Bullet then skips the parts of a robot (lidar,
+/// poles, plate) that cannot touch the ground instead of testing all of them
+/// every step, and horizontal lidar rays no longer test the ground at all.
+class GroundPlaneShape : public btStaticPlaneShape {
+ public:
+  using btStaticPlaneShape::btStaticPlaneShape;
+  void getAabb(const btTransform& t, btVector3& aabb_min, btVector3& aabb_max) const override {
+    btStaticPlaneShape::getAabb(t, aabb_min, aabb_max);
+    const btVector3 n = t.getBasis() * getPlaneNormal();
+    for (int axis = 0; axis < 3; ++axis) {
+      if (std::fabs(std::fabs(n[axis]) - 1.0) > 1e-12) continue;
+      const double surface = t.getOrigin()[axis] + n[axis] * getPlaneConstant();
+      if (n[axis] > 0) aabb_max[axis] = surface + kGroundSlabM;
+      else aabb_min[axis] = surface - kGroundSlabM;
+    }
+  }
+};
+
 std::unique_ptr<btCollisionShape> makeStaticShape(const StaticShape& s) {
   std::unique_ptr<btCollisionShape> shape;
   switch (s.kind) {
@@ -41,7 +64,7 @@ std::unique_ptr<btCollisionShape> makeStaticShape(const StaticShape& s) {
       shape = std::make_unique<btSphereShape>(s.size.x());
       break;
     case StaticShape::Plane:
-      return std::make_unique<btStaticPlaneShape>(toBt(s.normal), 0.0);
+      return std::make_unique<GroundPlaneShape>(toBt(s.normal), 0.0);
   }
   shape->setMargin(kMarginM);
   return shape;
