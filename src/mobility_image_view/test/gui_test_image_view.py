@@ -63,7 +63,7 @@ class ImageViewGuiTest(unittest.TestCase):
         self.addCleanup(camera.stop)
         proc = self.start(viewer('/gui_test/image', f'_save_dir:={self.tmp.name}',
                                  package='rqt_image_view', executable='rqt_image_view'))
-        window = x11.wait_window('^Image View - /gui_test/image$', timeout_s=30)
+        window = proc.wait_window('^Image View - /gui_test/image$', timeout_s=30)
 
         # Rate: after 3 s of frames the shown rate matches what was published.
         first = proc.wait_line(lambda line: parse_status_line(line)['rate_hz'] != 'none', 20,
@@ -119,7 +119,7 @@ class ImageViewGuiTest(unittest.TestCase):
         waiting.wait_for(lambda: '/gui_test/chatter' in dict(rospy.get_published_topics()), 10,
                          'the String topic registered')
         proc = self.start(viewer())
-        window = x11.wait_window('^Image View$', timeout_s=30)
+        window = proc.wait_window('^Image View$', timeout_s=30)
         topics = proc.wait_line(lambda _l: True, 10, 'the topic list', prefix='topics: ').split()
         self.assertIn('/gui_test/first', topics)
         self.assertNotIn('/gui_test/chatter', topics)
@@ -134,7 +134,7 @@ class ImageViewGuiTest(unittest.TestCase):
 
         # Alt+T focuses the drop-down, Down selects its first entry, which is then shown.
         x11.key(window, 'alt+t', 'Down')
-        x11.wait_window('^Image View - /gui_test/first$', timeout_s=10)
+        proc.wait_window('^Image View - /gui_test/first$', timeout_s=10)
         proc.wait_line(lambda line: parse_status_line(line)['encoding'] == 'rgb8', 10,
                        'frames of the selected topic', prefix='status: ')
 
@@ -142,7 +142,7 @@ class ImageViewGuiTest(unittest.TestCase):
         camera = SyntheticCamera('/gui_test/yuv', RATE_HZ, encoding='yuv422')
         self.addCleanup(camera.stop)
         proc = self.start(viewer('/gui_test/yuv', f'_save_dir:={self.tmp.name}'))
-        window = x11.wait_window('^Image View - /gui_test/yuv$', timeout_s=30)
+        window = proc.wait_window('^Image View - /gui_test/yuv$', timeout_s=30)
         message = proc.wait_line(lambda line: 'yuv422' in line, 20, 'the encoding message',
                                  prefix='message: ')
         self.assertEqual(message, "message: cannot show encoding 'yuv422': supported are rgb8, "

@@ -62,7 +62,7 @@ class ImageViewSimTest(unittest.TestCase):
         proc = ViewerProcess(['rosrun', 'rqt_image_view', 'rqt_image_view', TOPIC,
                               f'_save_dir:={tmp.name}', '_print_status:=true'])
         self.addCleanup(proc.stop)
-        window = x11.wait_window('^Image View - /camera/image_raw$', timeout_s=60)
+        window = proc.wait_window('^Image View - /camera/image_raw$', timeout_s=60)
         line = proc.wait_line(lambda l: parse_status_line(l)['rate_hz'] != 'none', 60,
                               'camera frames in the viewer', prefix='status: ')
         fields = parse_status_line(line)

@@ -3,6 +3,7 @@ import signal
 import subprocess
 import threading
 
+from mobility_testing import x11
 from mobility_testing.waiting import wait_for
 
 
@@ -30,11 +31,24 @@ class ViewerProcess:
     def wait_line(self, predicate, timeout_s, what, prefix=''):
         """Waits for a line (with prefix) satisfying predicate; returns the newest one."""
         def found():
-            if self.process.poll() is not None:
-                raise AssertionError(f'viewer exited with {self.process.returncode} '
-                                     f'while waiting for {what}')
+            self._check_running(what)
             matches = [line for line in self.lines(prefix) if predicate(line)]
             return matches[-1] if matches else None
+        return wait_for(found, timeout_s, what)
+
+    def _check_running(self, what):
+        if self.process.poll() is not None:
+            raise AssertionError(f'viewer exited with {self.process.returncode} '
+                                 f'while waiting for {what}')
+
+    def wait_window(self, title_regex, timeout_s):
+        """Waits for the viewer's window (failing at once if the viewer exits); its id."""
+        x11.require_display()
+        what = f'a window titled /{title_regex}/'
+
+        def found():
+            self._check_running(what)
+            return (x11.find_windows(title_regex) or [None])[0]
         return wait_for(found, timeout_s, what)
 
     def stop(self):
