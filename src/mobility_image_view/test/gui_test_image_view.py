@@ -138,6 +138,29 @@ class ImageViewGuiTest(unittest.TestCase):
         proc.wait_line(lambda line: parse_status_line(line)['encoding'] == 'rgb8', 10,
                        'frames of the selected topic', prefix='status: ')
 
+    def test_32fc1_depth_is_scaled_to_grey_with_nan_black(self):
+        # 160x120 metres: columns 0-49 at 1 m, 50-99 at 2 m, 100-159 at 3 m, the top 20 rows
+        # NaN. Scaled from 1..3 m: 0, 127.5 -> 128 and 255; NaN black.
+        depth = np.empty((120, 160), dtype=np.float32)
+        depth[:, :50], depth[:, 50:100], depth[:, 100:] = 1.0, 2.0, 3.0
+        depth[:20] = np.nan
+        expected = np.zeros((120, 160, 3), dtype=np.uint8)
+        expected[20:, 50:100], expected[20:, 100:] = 128, 255
+        camera = SyntheticCamera('/gui_test/depth', RATE_HZ, encoding='32FC1',
+                                 frame=lambda _k: depth)
+        self.addCleanup(camera.stop)
+        proc = self.start(viewer('/gui_test/depth'))
+        window = proc.wait_window('^Image View - /gui_test/depth$', timeout_s=30)
+        proc.wait_line(lambda line: parse_status_line(line)['encoding'] == '32FC1', 20,
+                       'depth frames', prefix='status: ')
+        x11.key(window, 'ctrl+1')
+        white = (255, 255, 255)
+        [shot] = waiting.wait_for(lambda: self.shot_if(window, 'depth.png', lambda s: (
+            images.count_colour(s, white, 0) >= 60 * 100)), 10, 'the 1:1 depth picture')
+        x0, y0, _, _ = bounding_box(images.colour_mask(shot, white, 0))
+        left, top = x0 - 100, y0 - 20
+        np.testing.assert_array_equal(shot[top:top + 120, left:left + 160], expected)
+
     def test_unsupported_encoding_is_named_plainly(self):
         camera = SyntheticCamera('/gui_test/yuv', RATE_HZ, encoding='yuv422')
         self.addCleanup(camera.stop)

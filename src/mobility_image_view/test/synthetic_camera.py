@@ -28,19 +28,23 @@ def frame_number(pixels):
 
 
 def to_message(pixels, encoding='rgb8'):
-    """A sensor_msgs/Image of an (H, W, 3) uint8 array."""
+    """A sensor_msgs/Image of an array whose rows are the image rows (little-endian)."""
+    pixels = np.ascontiguousarray(pixels, dtype=pixels.dtype.newbyteorder('<'))
     message = Image(height=pixels.shape[0], width=pixels.shape[1], encoding=encoding,
-                    is_bigendian=0, step=pixels.shape[1] * 3)
+                    is_bigendian=0, step=pixels.nbytes // pixels.shape[0])
     message.data = pixels.tobytes()
     message.header.frame_id = 'camera_link'
     return message
 
 
 class SyntheticCamera:
-    """Publishes make_frame(0), make_frame(1), ... on topic at rate_hz (wall clock)."""
+    """Publishes frame(0), frame(1), ... on topic at rate_hz (wall clock).
 
-    def __init__(self, topic, rate_hz, encoding='rgb8'):
+    frame(k) is an array (default make_frame) sent with the given encoding."""
+
+    def __init__(self, topic, rate_hz, encoding='rgb8', frame=make_frame):
         self.topic, self.rate_hz, self.encoding = topic, rate_hz, encoding
+        self._frame = frame
         self._publisher = rospy.Publisher(topic, Image, queue_size=2)
         self._sent = []   # (monotonic time, k)
         self._lock = threading.Lock()
@@ -53,7 +57,7 @@ class SyntheticCamera:
         start = time.monotonic()
         k = 0
         while not self._stop.is_set() and not rospy.is_shutdown():
-            self._publisher.publish(to_message(make_frame(k), self.encoding))
+            self._publisher.publish(to_message(self._frame(k), self.encoding))
             with self._lock:
                 self._sent.append((time.monotonic(), k))
             k += 1
