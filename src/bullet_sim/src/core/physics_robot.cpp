@@ -87,8 +87,9 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
     }
     body.shape = std::move(compound);
   }
-  body.motion = std::make_unique<btDefaultMotionState>();
-  btRigidBody::btRigidBodyConstructionInfo info(plan.mass_kg, body.motion.get(), body.shape.get(),
+  // No motion state: poses are read from the bodies, so Bullet need not copy
+  // them out after every step.
+  btRigidBody::btRigidBodyConstructionInfo info(plan.mass_kg, nullptr, body.shape.get(),
                                                 toBt(plan.principal_inertia));
   body.rigid = std::make_unique<btRigidBody>(info);
   body.rigid->setActivationState(DISABLE_DEACTIVATION);
@@ -115,7 +116,6 @@ void PhysicsRobot::placeBodies(const Eigen::Isometry3d& T_world_model) {
     btRigidBody& rb = *bodies_[i].rigid;
     rb.setWorldTransform(toBt(T_world_com));
     rb.setInterpolationWorldTransform(rb.getWorldTransform());
-    bodies_[i].motion->setWorldTransform(rb.getWorldTransform());
   }
 }
 
@@ -127,7 +127,6 @@ void PhysicsRobot::moveRoot(const Eigen::Isometry3d& T_world_root, const Twist3&
     const Eigen::Isometry3d T = T_new_old * toEigen(rb.getWorldTransform());
     rb.setWorldTransform(toBt(T));
     rb.setInterpolationWorldTransform(rb.getWorldTransform());
-    b.motion->setWorldTransform(rb.getWorldTransform());
     rb.setLinearVelocity(toBt(twist.linear + twist.angular.cross(T.translation() - origin)));
     rb.setAngularVelocity(toBt(twist.angular));
     rb.clearForces();

@@ -50,7 +50,6 @@ class PhysicsRobot {
   struct Body {
     std::unique_ptr<btCollisionShape> shape;
     std::vector<std::unique_ptr<btCollisionShape>> children;
-    std::unique_ptr<btDefaultMotionState> motion;
     std::unique_ptr<btRigidBody> rigid;
     BodyMaterial material;
     Eigen::Isometry3d T_com_root;  ///< inverse of the plan's T_root_com

@@ -102,6 +102,9 @@ PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
     obj->setWorldTransform(toBt(toIsometry(s.pose)));
     obj->setFriction(kStaticFriction);
     obj->setUserIndex(-1);
+    // Bullet recomputes the bounding box of every "active" object each step;
+    // static shapes never move.
+    obj->setActivationState(ISLAND_SLEEPING);
     world_->addCollisionObject(obj.get(), btBroadphaseProxy::StaticFilter,
                                btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     objects_.push_back(std::move(obj));
