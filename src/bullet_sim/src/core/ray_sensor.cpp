@@ -11,8 +11,9 @@ namespace {
 
 /// Bullet's broadphase and filtering, with boxes intersected exactly by slabs:
 /// Bullet's general convex ray cast iterates (about 13k instructions per
-/// box a ray's bounding box touches), and the walls of a world are boxes.
-/// Every other shape goes to Bullet's own narrowphase.
+/// box a ray's bounding box touches), and walls and most robot parts are
+/// boxes. Compounds are opened here so that their boxes take the same path;
+/// every other shape goes to Bullet's own narrowphase.
 class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
  public:
   using ClosestRayResultCallback::ClosestRayResultCallback;
@@ -20,15 +21,40 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
   bool needsCollision(btBroadphaseProxy* proxy) const override {
     if (!ClosestRayResultCallback::needsCollision(proxy)) return false;
     const auto* obj = static_cast<const btCollisionObject*>(proxy->m_clientObject);
-    if (obj->getCollisionShape()->getShapeType() != BOX_SHAPE_PROXYTYPE) return true;
-    const auto* box = static_cast<const btBoxShape*>(obj->getCollisionShape());
-    const double t = slabFraction(obj->getWorldTransform(), box->getHalfExtentsWithMargin());
-    if (t < m_closestHitFraction) {
-      auto* self = const_cast<BoxAwareRayCallback*>(this);
-      self->m_closestHitFraction = t;
-      self->m_collisionObject = obj;
-    }
+    const int type = obj->getCollisionShape()->getShapeType();
+    if (type != BOX_SHAPE_PROXYTYPE && type != COMPOUND_SHAPE_PROXYTYPE) return true;
+    const_cast<BoxAwareRayCallback*>(this)->testShape(obj, obj->getCollisionShape(),
+                                                      obj->getWorldTransform());
     return false;
+  }
+
+ private:
+  void testShape(const btCollisionObject* obj, const btCollisionShape* shape,
+                 const btTransform& T_world_shape) {
+    if (shape->getShapeType() == BOX_SHAPE_PROXYTYPE) {
+      const auto* box = static_cast<const btBoxShape*>(shape);
+      const double t = slabFraction(T_world_shape, box->getHalfExtentsWithMargin());
+      if (t < m_closestHitFraction) {
+        m_closestHitFraction = t;
+        m_collisionObject = obj;
+      }
+    } else if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE) {
+      const auto* compound = static_cast<const btCompoundShape*>(shape);
+      for (int i = 0; i < compound->getNumChildShapes(); ++i) {
+        testShape(obj, compound->getChildShape(i), T_world_shape * compound->getChildTransform(i));
+      }
+    } else {
+      btVector3 aabb_min, aabb_max;
+      shape->getAabb(T_world_shape, aabb_min, aabb_max);
+      btScalar t = m_closestHitFraction;
+      btVector3 unused_normal;
+      if (!btRayAabb(m_rayFromWorld, m_rayToWorld, aabb_min, aabb_max, t, unused_normal)) return;
+      btTransform from = btTransform::getIdentity(), to = btTransform::getIdentity();
+      from.setOrigin(m_rayFromWorld);
+      to.setOrigin(m_rayToWorld);
+      btCollisionWorld::rayTestSingle(from, to, const_cast<btCollisionObject*>(obj), shape,
+                                      T_world_shape, *this);
+    }
   }
 
  private:
