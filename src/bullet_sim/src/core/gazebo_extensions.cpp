@@ -86,7 +86,7 @@ class ExtensionReader {
                 const std::string& file) {
     if (file.empty()) {
       spec_->warnings.push_back(type + " sensor '" + name + "' on link '" + link +
-                                "' has no ROS plugin: nothing is published for it");
+                                "' has no ROS plugin: as in Gazebo, no ROS topic carries it");
     } else {
       spec_->warnings.push_back("plugin '" + file + "' in " + type + " sensor '" + name +
                                 "' on link '" + link + "' is not supported: ignored");

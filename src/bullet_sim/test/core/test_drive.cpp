@@ -180,3 +180,41 @@ TEST_F(BurgerOnFlatGround, ResetReplaysIdentically) {
   run(&sim_, 1.0);
   EXPECT_NEAR((sim_.modelPose("burger").position - first.position).norm(), 0, 1e-9);
 }
+
+TEST(Joints, RevoluteLimitHoldsAFallingArmAndPrismaticIsHeldFixedWithAWarning) {
+  const char* urdf = R"(<robot name="arm">
+    <link name="base">
+      <collision><origin xyz="0 0 0.05"/><geometry><box size="0.4 0.4 0.1"/></geometry></collision>
+      <inertial><origin xyz="0 0 0.05"/><mass value="5"/>
+        <inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+    </link>
+    <link name="arm">
+      <inertial><origin xyz="0 0.2 0"/><mass value="0.1"/>
+        <inertia ixx="1e-4" ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial>
+    </link>
+    <joint name="shoulder" type="revolute">
+      <parent link="base"/><child link="arm"/><origin xyz="0 0 0.3"/><axis xyz="1 0 0"/>
+      <limit lower="-0.5" upper="0.5" effort="1" velocity="1"/>
+    </joint>
+    <link name="slider">
+      <inertial><mass value="0.01"/>
+        <inertia ixx="1e-5" ixy="0" ixz="0" iyy="1e-5" iyz="0" izz="1e-5"/></inertial>
+    </link>
+    <joint name="rail" type="prismatic">
+      <parent link="base"/><child link="slider"/><axis xyz="1 0 0"/>
+      <limit lower="0" upper="0.1" effort="1" velocity="1"/>
+    </joint>
+  </robot>)";
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("arm", parseRobot(urdf, "arm.urdf"), Pose3());
+  bool warned = false;
+  for (const std::string& w : sim.robotSpec("arm").warnings) {
+    warned = warned || w.find("joint 'rail': type not supported") != std::string::npos;
+  }
+  EXPECT_TRUE(warned);
+  run(&sim, 1.0);
+  const JointStateData js = sim.readJointStates("arm");
+  ASSERT_EQ(js.names.size(), 1u);  // the prismatic joint is held fixed
+  // The arm's mass sits on +y: gravity turns it about +x down to the lower limit.
+  EXPECT_NEAR(jointPosition(js, "shoulder"), -0.5, 0.03);
+}
