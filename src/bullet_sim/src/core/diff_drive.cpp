@@ -36,8 +36,7 @@ void DiffDriveController::updateMotors(PhysicsRobot* robot, double time_s, doubl
       const double max_change = spec_.wheel_acceleration * dt;
       instructed_mps_[side] += std::clamp(error, -max_change, max_change);
     }
-    robot->setJointMotor(joints_[side], instructed_mps_[side] / radius_m, spec_.wheel_torque_nm,
-                         physics_dt_s);
+    robot->setJointMotor(joints_[side], instructed_mps_[side] / radius_m, spec_.wheel_torque_nm);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "physics_robot.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "bullet_convert.h"
@@ -9,6 +10,10 @@ namespace {
 
 /// Bullet's default 4 cm margin would swell the Burger's millimetre parts.
 constexpr double kMarginM = 0.0005;
+/// How fast a motor pulls its joint back onto the reference angle (1/s).
+constexpr double kMotorStiffnessPerS = 20.0;
+/// Largest reference lag a motor keeps (rad).
+constexpr double kMaxMotorLagRad = 0.05;
 
 std::unique_ptr<btCollisionShape> makeShape(const CollisionPlan& c) {
   std::unique_ptr<btConvexInternalShape> s;
@@ -55,6 +60,7 @@ PhysicsRobot::PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPl
     hinges_.push_back(std::move(hinge));
   }
   joint_angles_.assign(hinges_.size(), 0.0);
+  motors_.assign(hinges_.size(), Motor());
   last_raw_angles_.assign(hinges_.size(), 0.0);
 }
 
@@ -103,8 +109,11 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
     // A link without collision (the flag) is never touched and never seen by rays.
     world_->addRigidBody(stored.rigid.get(), 0, 0);
   } else {
+    // Friction anchors keep resting contacts where they are: without them a
+    // robot standing on its wheels creeps and slowly turns.
     stored.rigid->setCollisionFlags(stored.rigid->getCollisionFlags() |
-                                    btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
+                                    btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK |
+                                    btCollisionObject::CF_HAS_FRICTION_ANCHOR);
     world_->addRigidBody(stored.rigid.get());
   }
 }
@@ -170,9 +179,26 @@ double PhysicsRobot::jointVelocity(size_t joint) const {
   return (h.getRigidBodyB().getAngularVelocity() - h.getRigidBodyA().getAngularVelocity()).dot(axis);
 }
 
-void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max_torque_nm,
-                                 double dt) {
-  hinges_[joint]->enableAngularMotor(true, velocity_radps, max_torque_nm * dt);
+void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max_torque_nm) {
+  Motor& m = motors_[joint];
+  if (!m.enabled) m.reference_rad = joint_angles_[joint];
+  m.enabled = true;
+  m.velocity_radps = velocity_radps;
+  m.max_torque_nm = max_torque_nm;
+}
+
+void PhysicsRobot::applyMotors(double dt_s) {
+  for (size_t i = 0; i < motors_.size(); ++i) {
+    Motor& m = motors_[i];
+    if (!m.enabled) continue;
+    // Proportional pull towards the reference; the error is bounded so that a
+    // stalled wheel (torque limit, wall) does not wind up and jump when freed.
+    const double error = std::clamp(m.reference_rad - joint_angles_[i], -kMaxMotorLagRad,
+                                    kMaxMotorLagRad);
+    m.reference_rad = joint_angles_[i] + error + m.velocity_radps * dt_s;
+    hinges_[i]->enableAngularMotor(true, m.velocity_radps + kMotorStiffnessPerS * error,
+                                   m.max_torque_nm * dt_s);
+  }
 }
 
 void PhysicsRobot::updateJointAngles() {

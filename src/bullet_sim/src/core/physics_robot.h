@@ -42,7 +42,12 @@ class PhysicsRobot {
   int jointIndex(const std::string& name) const;
   double jointPosition(size_t joint) const { return joint_angles_[joint]; }
   double jointVelocity(size_t joint) const;
-  void setJointMotor(size_t joint, double velocity_radps, double max_torque_nm, double dt);
+  /// Drives a joint at velocity_radps with at most max_torque_nm. The motor
+  /// follows a reference angle that advances at that velocity, so a wheel told
+  /// to stand still holds its angle instead of creeping under load.
+  void setJointMotor(size_t joint, double velocity_radps, double max_torque_nm);
+  /// Sets every motor's velocity target for the coming physics step of dt_s.
+  void applyMotors(double dt_s);
   /// Tracks the hinge angles across +-pi; called after every physics step.
   void updateJointAngles();
 
@@ -64,6 +69,12 @@ class PhysicsRobot {
   std::vector<Body> bodies_;
   std::vector<std::unique_ptr<btHingeConstraint>> hinges_;
   std::vector<double> joint_angles_, last_raw_angles_;
+  struct Motor {
+    bool enabled = false;
+    double velocity_radps = 0, max_torque_nm = 0;
+    double reference_rad = 0;  ///< angle the joint should be at
+  };
+  std::vector<Motor> motors_;
 };
 
 }  // namespace bullet_sim

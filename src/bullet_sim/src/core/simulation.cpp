@@ -142,6 +142,7 @@ std::vector<DueSensor> Simulation::step() {
     if (r.drive && r.schedule.driveDue(k, dt)) {
       r.drive->updateMotors(r.physics.get(), (k - 1) * dt, dt);
     }
+    r.physics->applyMotors(dt);
   }
   impl_->physics->step(dt);
   impl_->steps = k;

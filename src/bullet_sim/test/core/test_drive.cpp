@@ -52,6 +52,16 @@ class BurgerOnFlatGround : public ::testing::Test {
 
 }  // namespace
 
+TEST_F(BurgerOnFlatGround, StaysWhereItIsWithoutACommand) {
+  run(&sim_, 1.0);  // settle onto wheels and caster
+  const Pose3 settled = sim_.modelPose("burger");
+  run(&sim_, 20.0);
+  const Pose3 later = sim_.modelPose("burger");
+  EXPECT_LT((later.position - settled.position).norm(), 0.001);
+  EXPECT_LT(std::fabs(std::remainder(yawOf(later.orientation) - yawOf(settled.orientation), 2 * M_PI)),
+            0.001);
+}
+
 TEST_F(BurgerOnFlatGround, DrivesStraightOneMetreInFiveSeconds) {
   sim_.setCmdVel("burger", 0.2, 0);
   run(&sim_, 5.0);
