@@ -1,5 +1,9 @@
 #include "gazebo_extensions.h"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include <tinyxml2.h>
 
 #include "bullet_sim/errors.h"
@@ -30,6 +34,20 @@ class ExtensionReader {
     for (const XMLElement* p = gazebo->FirstChildElement("plugin"); p;
          p = p->NextSiblingElement("plugin")) {
       readModelPlugin(p);
+    }
+  }
+
+  /// Warns about sensors without a ROS plugin, once every block is read: an
+  /// IMU sensor whose link a model-level IMU plugin (libgazebo_ros_imu.so,
+  /// bodyName) already publishes is fine, as the Burger's is.
+  void finish() {
+    for (const Pluginless& p : pluginless_) {
+      const bool published_by_model_plugin =
+          p.type == "imu" && std::any_of(spec_->imus.begin(), spec_->imus.end(),
+                                         [&](const ImuSpec& imu) { return imu.link == p.link; });
+      if (published_by_model_plugin) continue;
+      spec_->warnings.push_back(p.type + " sensor '" + p.name + "' on link '" + p.link +
+                                "' has no ROS plugin: as in Gazebo, no ROS topic carries it");
     }
   }
 
@@ -85,8 +103,7 @@ class ExtensionReader {
   void noPlugin(const std::string& type, const std::string& name, const std::string& link,
                 const std::string& file) {
     if (file.empty()) {
-      spec_->warnings.push_back(type + " sensor '" + name + "' on link '" + link +
-                                "' has no ROS plugin: as in Gazebo, no ROS topic carries it");
+      pluginless_.push_back({type, name, link});
     } else {
       spec_->warnings.push_back("plugin '" + file + "' in " + type + " sensor '" + name +
                                 "' on link '" + link + "' is not supported: ignored");
@@ -221,6 +238,10 @@ class ExtensionReader {
 
   XmlValues xml_;
   RobotSpec* spec_;
+  struct Pluginless {
+    std::string type, name, link;
+  };
+  std::vector<Pluginless> pluginless_;
 };
 
 }  // namespace
@@ -238,6 +259,7 @@ void parseGazeboExtensions(const std::string& urdf_xml, const std::string& sourc
        g = g->NextSiblingElement("gazebo")) {
     reader.readBlock(g);
   }
+  reader.finish();
 }
 
 }  // namespace bullet_sim

@@ -226,7 +226,8 @@ OdometryData Simulation::readOdometry(const std::string& robot) {
   if (d.odometry_source == OdomSource::World) {
     const std::string& root = r.physics->plan().bodies[0].root_link;
     const Eigen::Isometry3d T_world_root = r.physics->linkPose(root);
-    odom.pose = toPose3(r.T_world_spawn.inverse() * T_world_root);
+    // As Gazebo's plugin does: odometry from the world is the true world pose.
+    odom.pose = toPose3(T_world_root);
     const Twist3 v = r.physics->linkTwist(root);
     odom.twist_in_child.linear = T_world_root.linear().transpose() * v.linear;
     odom.twist_in_child.angular = T_world_root.linear().transpose() * v.angular;

@@ -99,6 +99,8 @@ TEST(RobotLoader, BurgerSensorsAndDriveFromGazeboTags) {
   EXPECT_DOUBLE_EQ(spec.surfaces.at("wheel_left_link").mu1, 0.1);
   EXPECT_DOUBLE_EQ(spec.surfaces.at("caster_back_link").kp, 1000000.0);
   EXPECT_FALSE(spec.visuals.empty());
+  // Its plugin-less <sensor type="imu"> is published by the model's IMU plugin.
+  EXPECT_TRUE(spec.warnings.empty()) << ::testing::PrintToString(spec.warnings);
 }
 
 TEST(RobotLoader, UnsupportedPluginSensorAndMasslessCollisionAreNamedInWarnings) {
