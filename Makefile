@@ -28,6 +28,7 @@ screenshots: build
 	@scripts/screenshots.sh
 
 bench: build
+	@scripts/setup.sh --bench
 	@bench/run_all.sh
 
 clean:

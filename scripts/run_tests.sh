@@ -10,8 +10,11 @@ export ROS_LOG_DIR="$ROS_HOME/log"
 export LIBGL_ALWAYS_SOFTWARE=1
 export QT_X11_NO_MITSHM=1
 rm -rf build/test_results
+# ROS's setup scripts read unset variables.
+set +u
 # shellcheck disable=SC1091
 source devel/setup.bash
+set -u
 # Every rostest carries its own time limit; this bound only guards the whole run.
 timeout --kill-after=30 4800 xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tcp" \
   catkin_make --source . --build build -DCMAKE_BUILD_TYPE=Release \

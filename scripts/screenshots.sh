@@ -7,12 +7,16 @@ export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 export SCREENSHOT_DIR="$PWD/docs/screenshots"
 export ROS_HOME="$PWD/build/ros_home"
 mkdir -p "$SCREENSHOT_DIR"
+# ROS's setup scripts read unset variables.
+set +u
 # shellcheck disable=SC1091
 source devel/setup.bash
+set -u
 tests=(
   "turtlebot_urdf test/model_rviz.test"
   "turtlebot3_description test/display_rviz.test"
   "xqrobot_description test/display_rviz.test"
+  "turtlebot3_gazebo test/roundTrack_rviz.test"
 )
 for entry in "${tests[@]}"; do
   read -r package test_file <<<"$entry"

@@ -22,7 +22,12 @@ else
   echo "setup: all $(wc -w <<<"$packages") Debian packages present"
 fi
 
-pip_missing=$(/usr/bin/python3 - deps/pip-requirements.txt <<'PY'
+# PyPI requirements: deps/pip-requirements.txt, and with --bench also
+# deps/pip-bench.txt (the PyBullet comparison of `make bench`).
+requirement_files=(deps/pip-requirements.txt)
+[[ "${1:-}" == "--bench" ]] && requirement_files+=(deps/pip-bench.txt)
+for requirements in "${requirement_files[@]}"; do
+  pip_missing=$(/usr/bin/python3 - "$requirements" <<'PY'
 import sys
 from importlib import metadata
 missing = []
@@ -38,10 +43,11 @@ for line in open(sys.argv[1]):
         missing.append(req)
 print(' '.join(missing))
 PY
-)
-if [[ -n "$pip_missing" ]]; then
-  echo "setup: installing for /usr/bin/python3: $pip_missing"
-  /usr/bin/python3 -m pip install -q --break-system-packages --root-user-action=ignore $pip_missing
-else
-  echo "setup: PyPI packages present ($(grep -cv '^\s*#' deps/pip-requirements.txt))"
-fi
+  )
+  if [[ -n "$pip_missing" ]]; then
+    echo "setup: installing for /usr/bin/python3: $pip_missing"
+    /usr/bin/python3 -m pip install -q --break-system-packages --root-user-action=ignore $pip_missing
+  else
+    echo "setup: PyPI packages of $requirements present"
+  fi
+done
