@@ -10,6 +10,9 @@ namespace {
 
 /// Bullet's default 4 cm margin would swell the Burger's millimetre parts.
 constexpr double kMarginM = 0.0005;
+/// Below these speeds for a while a robot's bodies go to sleep (m/s, rad/s).
+constexpr double kSleepLinearMps = 0.002;
+constexpr double kSleepAngularRadps = 0.01;
 /// How fast a motor pulls its joint back onto the reference angle (1/s).
 constexpr double kMotorStiffnessPerS = 20.0;
 /// Largest reference lag a motor keeps (rad).
@@ -98,7 +101,10 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   btRigidBody::btRigidBodyConstructionInfo info(plan.mass_kg, nullptr, body.shape.get(),
                                                 toBt(plan.principal_inertia));
   body.rigid = std::make_unique<btRigidBody>(info);
-  body.rigid->setActivationState(DISABLE_DEACTIVATION);
+  // A robot that has come to rest sleeps, as resting bodies do in Bullet: its
+  // contacts then cannot creep. Commands, teleports and contacts wake it
+  // (Bullet lets a body sleep after 2 s below these speeds).
+  body.rigid->setSleepingThresholds(kSleepLinearMps, kSleepAngularRadps);
   // ODE (Gazebo) integrates no gyroscopic term either; it costs a third of a step.
   body.rigid->setFlags(body.rigid->getFlags() & ~BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY);
   body.rigid->setUserIndex(robot_id);
@@ -109,11 +115,8 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
     // A link without collision (the flag) is never touched and never seen by rays.
     world_->addRigidBody(stored.rigid.get(), 0, 0);
   } else {
-    // Friction anchors keep resting contacts where they are: without them a
-    // robot standing on its wheels creeps and slowly turns.
     stored.rigid->setCollisionFlags(stored.rigid->getCollisionFlags() |
-                                    btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK |
-                                    btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+                                    btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
     world_->addRigidBody(stored.rigid.get());
   }
 }
@@ -139,7 +142,12 @@ void PhysicsRobot::moveRoot(const Eigen::Isometry3d& T_world_root, const Twist3&
     rb.setLinearVelocity(toBt(twist.linear + twist.angular.cross(T.translation() - origin)));
     rb.setAngularVelocity(toBt(twist.angular));
     rb.clearForces();
+    rb.activate(true);
   }
+}
+
+void PhysicsRobot::wake() {
+  for (Body& b : bodies_) b.rigid->activate(true);
 }
 
 Eigen::Isometry3d PhysicsRobot::T_world_body(size_t body) const {
@@ -182,6 +190,7 @@ double PhysicsRobot::jointVelocity(size_t joint) const {
 void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max_torque_nm) {
   Motor& m = motors_[joint];
   if (!m.enabled) m.reference_rad = joint_angles_[joint];
+  if (velocity_radps != 0 && !bodies_.front().rigid->isActive()) wake();
   m.enabled = true;
   m.velocity_radps = velocity_radps;
   m.max_torque_nm = max_torque_nm;

@@ -46,6 +46,8 @@ class PhysicsRobot {
   /// follows a reference angle that advances at that velocity, so a wheel told
   /// to stand still holds its angle instead of creeping under load.
   void setJointMotor(size_t joint, double velocity_radps, double max_torque_nm);
+  /// Wakes every body of the robot (a sleeping robot is not simulated).
+  void wake();
   /// Sets every motor's velocity target for the coming physics step of dt_s.
   void applyMotors(double dt_s);
   /// Tracks the hinge angles across +-pi; called after every physics step.
