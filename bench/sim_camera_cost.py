@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Camera cost inside bullet_sim_node: the round-track Burger run as fast as possible,
+"""Camera cost inside bullet_sim_node: the round-track Burger, driving a slow circle, run as fast as possible,
 first with nobody watching the camera, then with a subscriber on /camera/image_raw.
 Prints the real-time factor of both phases, the image rate in sim time, and the node's
 wall time per published frame (render + message + send), as the difference of the two
@@ -16,6 +16,7 @@ import threading
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DRIVE_MPS, DRIVE_RADPS = 0.1, 0.3  # a 0.33 m radius circle that stays in the west lane
 
 
 def ros_env(devel, port):
@@ -76,6 +77,7 @@ def main():
                                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
         import rospy
         from rosgraph_msgs.msg import Clock
+        from geometry_msgs.msg import Twist
         from sensor_msgs.msg import Image
         deadline = time.monotonic() + 30
         while subprocess.run(["rosparam", "list"], env=env, stdout=subprocess.DEVNULL,
@@ -95,6 +97,17 @@ def main():
              "_real_time_factor:=0", "_spawn_yaw:=1.5675"], env=env,
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
         rospy.init_node("camera_cost_bench", anonymous=True, disable_signals=True)
+        # Drive a slow circle in the lane: a robot at rest sleeps and costs nothing.
+        drive = rospy.Publisher("/cmd_vel", Twist, queue_size=1, latch=True)
+        command = Twist()
+        command.linear.x, command.angular.z = DRIVE_MPS, DRIVE_RADPS
+        drive.publish(command)
+        deadline = time.monotonic() + 30
+        while drive.get_num_connections() == 0:
+            if time.monotonic() > deadline:
+                raise RuntimeError("bullet_sim_node did not subscribe to /cmd_vel")
+            time.sleep(0.05)
+        time.sleep(0.5)  # the latched command reaches the node
         probe = Probe(rospy, Clock)
         while probe.now() < 1.0:  # warm-up
             time.sleep(0.05)

@@ -1,6 +1,6 @@
 #!/bin/bash
-# Benchmark of bullet_sim: the headless round-track scenario (Burger at the spawn pose,
-# 1 kHz physics, lidar, IMU, odometry, tf, joint states and /clock all published to a
+# Benchmark of bullet_sim: the headless round-track scenario (Burger from the spawn pose
+# driving a slow circle in the west lane, 1 kHz physics, lidar, IMU, odometry, tf, joint states and /clock all published to a
 # subscriber) run as fast as possible for a fixed sim time. Prints the sensor rates (sim
 # time), a PyBullet comparison when pybullet is importable, and the real-time factor as
 # the last line.
@@ -43,6 +43,17 @@ rosrun bullet_sim bullet_sim_node _world_file:="$WORLD" _real_time_factor:=0 \
   _spawn_yaw:=1.5675 _paused:=true > "$WORK/node.log" 2>&1 &
 node_pid=$!
 pids+=("$node_pid")
+
+# The node starts paused; a latched command makes the robot drive a 0.33 m circle (a
+# robot at rest sleeps and would cost nothing). Wait until the node has it.
+rostopic pub -l /cmd_vel geometry_msgs/Twist '{linear: {x: 0.1}, angular: {z: 0.3}}' \
+  > "$WORK/cmd_vel.log" 2>&1 &
+pids+=($!)
+for _ in $(seq 100); do
+  rostopic info /cmd_vel 2>/dev/null | grep -A3 Subscribers | grep -q bullet_sim && break
+  sleep 0.1
+done
+sleep 0.5
 
 echo "bullet_sim, round track, ${SIM_S} s of sim time after ${WARMUP_S} s warm-up:"
 rosrun bullet_sim bench_rate_listener "$WARMUP_S" "$SIM_S" > "$WORK/rates.txt"
