@@ -54,8 +54,7 @@ ros::Subscriber countHeader(ros::NodeHandle& nh, const std::string& topic, Windo
   window.counts[topic] = 0;
   const boost::function<void(const typename Msg::ConstPtr&)> callback =
       [&window, topic](const typename Msg::ConstPtr& msg) { window.count(topic, msg->header.stamp); };
-  return nh.subscribe<Msg>(topic, 1000, callback, ros::VoidConstPtr(),
-                           ros::TransportHints().tcpNoDelay());
+  return nh.subscribe<Msg>(topic, 1000, callback);
 }
 
 }  // namespace
