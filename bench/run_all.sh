@@ -6,8 +6,6 @@ cd "$(dirname "$0")"
 status=0
 echo "== sim_rtf.sh: bullet_sim on the round track, every sensor subscribed"
 ./sim_rtf.sh || status=1
-if [[ -x sim_camera_cost.py ]]; then
-  echo "== sim_camera_cost.py: camera frame cost in bullet_sim_node"
-  ./sim_camera_cost.py || status=1
-fi
+echo "== sim_camera_cost.py: camera frame cost in bullet_sim_node"
+./sim_camera_cost.py || status=1
 exit $status
