@@ -9,8 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "bullet_sim/camera_renderer.h"
@@ -20,14 +18,6 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string readFile(const char* path) {
-  std::ifstream in(path);
-  if (!in) throw bullet_sim::LoadError(std::string(path) + ": cannot read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -76,7 +66,7 @@ int main(int argc, char** argv) {
   }
   const double sim_seconds = argc > 3 ? std::atof(argv[3]) : 20.0;
   try {
-    const bullet_sim::RobotSpec robot = bullet_sim::parseRobot(readFile(argv[1]), argv[1]);
+    const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(argv[1]);
     const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[2]);
     if (robot.cameras.empty()) throw bullet_sim::LoadError(std::string(argv[1]) + ": no camera");
     const bullet_sim::CameraSpec& camera = robot.cameras[0];

@@ -11,22 +11,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 
 namespace {
-
-std::string readFile(const char* path) {
-  std::ifstream in(path);
-  if (!in) throw bullet_sim::LoadError(std::string(path) + ": cannot read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// Smallest range of the rays between two angles (degrees, counter-clockwise).
 double minRange(const bullet_sim::LaserScanData& scan, double from_deg, double to_deg) {
@@ -62,7 +52,7 @@ int main(int argc, char** argv) {
   }
   const double sim_seconds = argc > 3 ? std::atof(argv[3]) : 60.0;
   try {
-    const bullet_sim::RobotSpec robot = bullet_sim::parseRobot(readFile(argv[1]), argv[1]);
+    const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(argv[1]);
     const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[2]);
     bullet_sim::Simulation sim(world, bullet_sim::SimConfig());
     bullet_sim::Pose3 spawn;

@@ -85,6 +85,10 @@ struct RobotSpec {
 /// @throws LoadError naming the source, element and bad value.
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name);
 
+/// Reads a URDF file and parses it as parseRobot does (the path names the source).
+/// @throws LoadError when the file cannot be read or parsed.
+RobotSpec parseRobotFile(const std::string& path);
+
 }  // namespace bullet_sim
 
 #endif  // BULLET_SIM_ROBOT_SPEC_H

@@ -1,3 +1,6 @@
+#include <fstream>
+#include <sstream>
+
 #include <console_bridge/console.h>
 #include <urdf_parser/urdf_parser.h>
 
@@ -103,6 +106,14 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
     }
   }
   return spec;
+}
+
+RobotSpec parseRobotFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw LoadError(path + ": cannot read the robot file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseRobot(text.str(), path);
 }
 
 }  // namespace bullet_sim

@@ -1,7 +1,6 @@
 #include "burger.h"
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -36,10 +35,7 @@ bullet_sim::WorldSpec flatWorld() {
 }
 
 std::string roundTrackPath() {
-  const std::string real =
-      std::string(BULLET_SIM_WORKSPACE) + "/src/turtlebot3_gazebo/worlds/roundTrack.world";
-  if (std::ifstream(real).good()) return real;
-  return std::string(BULLET_SIM_FIXTURES) + "/round_track.world";
+  return std::string(BULLET_SIM_WORKSPACE) + "/src/turtlebot3_gazebo/worlds/roundTrack.world";
 }
 
 }  // namespace bullet_sim_test

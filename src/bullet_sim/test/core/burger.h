@@ -15,8 +15,7 @@ const std::string& burgerUrdf();
 bullet_sim::RobotSpec burgerSpec();
 /// An empty world: a ground plane only.
 bullet_sim::WorldSpec flatWorld();
-/// The round-track world: turtlebot3_gazebo's file when it exists, else the
-/// fixture built from the same wall table.
+/// The round-track world file of turtlebot3_gazebo.
 std::string roundTrackPath();
 
 }  // namespace bullet_sim_test

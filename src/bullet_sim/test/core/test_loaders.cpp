@@ -1,7 +1,5 @@
 // Loader tests: the Burger's URDF and Gazebo tags, the round-track world, and
 // one fixture per bad input with the error text asserted.
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -15,13 +13,6 @@ using namespace bullet_sim;
 namespace {
 
 std::string fixture(const std::string& name) { return std::string(BULLET_SIM_FIXTURES) + "/" + name; }
-
-std::string readFixture(const std::string& name) {
-  std::ifstream in(fixture(name));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// Runs `load` and returns the LoadError's message ("" when nothing is thrown).
 template <typename F>
@@ -112,14 +103,14 @@ TEST(RobotLoader, UnsupportedPluginSensorAndMasslessCollisionAreNamedInWarnings)
 
 TEST(RobotLoader, UrdfWithoutBaseLinkIsRejected) {
   const std::string error =
-      loadErrorOf([] { parseRobot(readFixture("urdf_no_root.urdf"), "urdf_no_root.urdf"); });
+      loadErrorOf([] { parseRobotFile(fixture("urdf_no_root.urdf")); });
   EXPECT_NE(error.find("urdf_no_root.urdf: invalid URDF"), std::string::npos) << error;
   EXPECT_NE(error.find("No root link found"), std::string::npos) << error;
 }
 
 TEST(RobotLoader, UrdfWithTwoRootsIsRejected) {
   const std::string error =
-      loadErrorOf([] { parseRobot(readFixture("urdf_two_roots.urdf"), "urdf_two_roots.urdf"); });
+      loadErrorOf([] { parseRobotFile(fixture("urdf_two_roots.urdf")); });
   EXPECT_NE(error.find("Two root links found: [base_link] and [stray_link]"), std::string::npos)
       << error;
 }
@@ -133,8 +124,14 @@ TEST(RobotLoader, MalformedGazeboValueNamesElementAndValue) {
   EXPECT_NE(error.find("<wheelSeparation>: 'wide' is not a number"), std::string::npos) << error;
 }
 
+TEST(RobotLoader, MissingRobotFileIsNamed) {
+  const std::string path = fixture("no_such.urdf");
+  const std::string error = loadErrorOf([&] { parseRobotFile(path); });
+  EXPECT_EQ(error, path + ": cannot read the robot file");
+}
+
 TEST(RobotLoader, DiffDriveNamingMissingJointFailsAtSpawn) {
-  const RobotSpec spec = parseRobot(readFixture("urdf_diff_drive_missing_joint.urdf"), "fixture");
+  const RobotSpec spec = parseRobotFile(fixture("urdf_diff_drive_missing_joint.urdf"));
   Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
   const std::string error = loadErrorOf([&] { sim.spawnRobot("r1", spec, Pose3()); });
   EXPECT_NE(error.find("<leftJoint> names joint 'wheel_left_joint' that does not exist"),
