@@ -7,6 +7,10 @@ cd "$(dirname "$0")/.."
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 export ROS_HOME="${ROS_HOME:-$PWD/build/ros_home}"
 export ROS_LOG_DIR="$ROS_HOME/log"
+# ROS talks over loopback only, whatever the machine's name resolves to.
+export ROS_HOSTNAME=localhost
+export ROS_MASTER_URI=http://localhost:11311
+unset ROS_IP
 export LIBGL_ALWAYS_SOFTWARE=1
 export QT_X11_NO_MITSHM=1
 rm -rf build/test_results
