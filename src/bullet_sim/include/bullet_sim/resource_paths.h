@@ -1,0 +1,50 @@
+#ifndef BULLET_SIM_RESOURCE_PATHS_H
+#define BULLET_SIM_RESOURCE_PATHS_H
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace bullet_sim {
+
+/// Where the URIs of worlds and robots are looked up: `model://NAME/...` in the model
+/// folders (Gazebo's GAZEBO_MODEL_PATH, in its order), `package://PKG/...` in the ROS
+/// packages found under the package path (ROS_PACKAGE_PATH, as rospack crawls it).
+struct ResourcePaths {
+  std::vector<std::string> model_paths;
+  std::vector<std::string> package_paths;
+
+  /// GAZEBO_MODEL_PATH and ROS_PACKAGE_PATH of the process environment (':'-separated;
+  /// empty entries are skipped).
+  static ResourcePaths fromEnvironment();
+};
+
+/// Resolves resource URIs to existing files, remembering where each package lives.
+class UriResolver {
+ public:
+  explicit UriResolver(ResourcePaths paths);
+
+  /// The path of the file `uri` names: `model://NAME/rest` (first model folder that holds
+  /// NAME/rest), `package://PKG/rest`, `file:///abs`, an absolute path, or a path relative
+  /// to `base_dir` (the folder of the file that names it; "" = the current folder).
+  /// Returns "" when nothing is found; `searched` (if given) receives the folders looked at.
+  std::string resolve(const std::string& uri, const std::string& base_dir,
+                      std::vector<std::string>* searched = nullptr) const;
+
+  /// The folder of a model named `name` (the first model path holding it), or "".
+  std::string findModel(const std::string& name,
+                        std::vector<std::string>* searched = nullptr) const;
+  /// The folder of ROS package `name` under the package path, or "".
+  std::string findPackage(const std::string& name) const;
+
+  const ResourcePaths& paths() const { return paths_; }
+
+ private:
+  ResourcePaths paths_;
+  mutable bool packages_crawled_ = false;
+  mutable std::map<std::string, std::string> package_dirs_;  ///< name -> folder
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_RESOURCE_PATHS_H
