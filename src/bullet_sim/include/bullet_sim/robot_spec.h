@@ -9,6 +9,7 @@
 #include <urdf_model/model.h>
 #include <urdf_world/types.h>
 
+#include "bullet_sim/resource_paths.h"
 #include "bullet_sim/types.h"
 
 namespace bullet_sim {
@@ -82,7 +83,11 @@ struct RobotSpec {
 
 /// Parses a URDF document with urdfdom plus its Gazebo extension tags.
 /// @param source_name used in error messages ("robot_description" or a path).
+/// URIs in it (meshes) are looked up through `resolver`.
 /// @throws LoadError naming the source, element and bad value.
+RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name,
+                     const UriResolver& resolver);
+/// As above, with the resource paths of the environment (ROS_PACKAGE_PATH, GAZEBO_MODEL_PATH).
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name);
 
 /// Reads a URDF file and parses it as parseRobot does (the path names the source).

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "bullet_sim/resource_paths.h"
 #include "bullet_sim/types.h"
 
 namespace bullet_sim {
@@ -31,9 +32,15 @@ struct WorldSpec {
   std::vector<std::string> warnings;
 };
 
-/// Loads an SDF world file with libsdformat. @throws LoadError naming the path.
+/// Loads an SDF world file with libsdformat; URIs in it (includes, meshes) are looked
+/// up through `resolver`, relative ones from the file's folder.
+/// @throws LoadError naming the path.
+WorldSpec loadWorldFile(const std::string& path, const UriResolver& resolver);
+/// As above, with the resource paths of the environment (GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH).
 WorldSpec loadWorldFile(const std::string& path);
 /// Loads an SDF world from a string. @throws LoadError naming source_name.
+WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name,
+                          const UriResolver& resolver);
 WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name);
 
 }  // namespace bullet_sim

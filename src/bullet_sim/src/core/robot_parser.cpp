@@ -78,6 +78,11 @@ void addVisuals(const urdf::Link& link, RobotSpec* spec) {
 }  // namespace
 
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name) {
+  return parseRobot(urdf_xml, source_name, UriResolver(ResourcePaths::fromEnvironment()));
+}
+
+RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name,
+                     const UriResolver& /*resolver: mesh URIs*/) {
   RobotSpec spec;
   {
     CapturedLog log;

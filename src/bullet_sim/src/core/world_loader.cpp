@@ -45,7 +45,8 @@ std::string geometryName(sdf::GeometryType type) {
 /// Builds the StaticShapes of one world and records where they came from.
 class WorldReader {
  public:
-  explicit WorldReader(std::string source) : source_(std::move(source)) {}
+  WorldReader(std::string source, const UriResolver& resolver)
+      : source_(std::move(source)), resolver_(resolver) {}
 
   WorldSpec read(const sdf::Root& root) {
     if (root.WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
@@ -165,6 +166,7 @@ class WorldReader {
   }
 
   std::string source_;
+  const UriResolver& resolver_;
 };
 
 std::string describe(const sdf::Errors& errors) {
@@ -185,6 +187,14 @@ void checkXml(const std::string& xml, const std::string& source) {
 }  // namespace
 
 WorldSpec loadWorldFile(const std::string& path) {
+  return loadWorldFile(path, UriResolver(ResourcePaths::fromEnvironment()));
+}
+
+WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name) {
+  return loadWorldString(sdf_xml, source_name, UriResolver(ResourcePaths::fromEnvironment()));
+}
+
+WorldSpec loadWorldFile(const std::string& path, const UriResolver& resolver) {
   std::ifstream in(path);
   if (!in.good()) throw LoadError(path + ": world file does not exist or cannot be read");
   std::stringstream text;
@@ -193,15 +203,16 @@ WorldSpec loadWorldFile(const std::string& path) {
   sdf::Root root;
   const sdf::Errors errors = root.Load(path);
   if (!errors.empty()) throw LoadError(path + ": invalid SDF world: " + describe(errors));
-  return WorldReader(path).read(root);
+  return WorldReader(path, resolver).read(root);
 }
 
-WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name) {
+WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name,
+                          const UriResolver& resolver) {
   checkXml(sdf_xml, source_name);
   sdf::Root root;
   const sdf::Errors errors = root.LoadSdfString(sdf_xml);
   if (!errors.empty()) throw LoadError(source_name + ": invalid SDF world: " + describe(errors));
-  return WorldReader(source_name).read(root);
+  return WorldReader(source_name, resolver).read(root);
 }
 
 }  // namespace bullet_sim
