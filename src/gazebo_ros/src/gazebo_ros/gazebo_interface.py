@@ -1,0 +1,35 @@
+"""Client helpers for the simulator's spawn and configuration services, with the names
+and arguments of gazebo_ros's Python API (`from gazebo_ros import gazebo_interface`)."""
+import rospy
+from gazebo_msgs.srv import SetModelConfiguration, SpawnModel
+
+
+def _call(service_name, service_type, *args):
+    rospy.loginfo('Waiting for service %s', service_name)
+    rospy.wait_for_service(service_name)
+    try:
+        response = rospy.ServiceProxy(service_name, service_type)(*args)
+    except rospy.ServiceException as error:
+        rospy.logerr('%s call failed: %s', service_name, error)
+        return False
+    (rospy.loginfo if response.success else rospy.logerr)(
+        '%s: %s', service_name, response.status_message)
+    return response.success
+
+
+def spawn_sdf_model_client(model_name, model_xml, robot_namespace, initial_pose,
+                           reference_frame, gazebo_namespace):
+    return _call(gazebo_namespace + '/spawn_sdf_model', SpawnModel, model_name, model_xml,
+                 robot_namespace, initial_pose, reference_frame)
+
+
+def spawn_urdf_model_client(model_name, model_xml, robot_namespace, initial_pose,
+                            reference_frame, gazebo_namespace):
+    return _call(gazebo_namespace + '/spawn_urdf_model', SpawnModel, model_name, model_xml,
+                 robot_namespace, initial_pose, reference_frame)
+
+
+def set_model_configuration_client(model_name, model_param_name, joint_names, joint_positions,
+                                   gazebo_namespace):
+    return _call(gazebo_namespace + '/set_model_configuration', SetModelConfiguration,
+                 model_name, model_param_name, joint_names, joint_positions)

@@ -1,0 +1,77 @@
+"""Gazebo's search paths as gazebo_ros users set them.
+
+Gazebo finds `model://` folders in GAZEBO_MODEL_PATH, world names such as
+`worlds/empty.world` in GAZEBO_RESOURCE_PATH, and gazebo_ros adds the paths that packages
+export in their package.xml (`<export><gazebo_ros gazebo_model_path="..."/></export>`),
+collected with `rospack plugins --attrib=ATTRIB gazebo_ros` (a package must depend on
+gazebo_ros for rospack to list it).
+"""
+import os
+import subprocess
+
+# package.xml export attribute -> environment variable it extends
+EXPORTS = (
+    ('gazebo_model_path', 'GAZEBO_MODEL_PATH'),
+    ('gazebo_media_path', 'GAZEBO_RESOURCE_PATH'),
+    ('plugin_path', 'GAZEBO_PLUGIN_PATH'),
+)
+
+
+def exported_paths(attrib, rospack=('rospack',)):
+    """The values of `<gazebo_ros ATTRIB="..."/>` of every package that depends on
+    gazebo_ros, in rospack's order, `${prefix}` already expanded by rospack."""
+    try:
+        out = subprocess.run(list(rospack) + ['plugins', '--attrib=' + attrib, 'gazebo_ros'],
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                             universal_newlines=True, check=False).stdout
+    except OSError:
+        return []
+    paths = []
+    for line in out.splitlines():
+        _, _, value = line.strip().partition(' ')
+        for path in value.split(':'):
+            path = path.strip()
+            if path and path not in paths:
+                paths.append(path)
+    return paths
+
+
+def split(value):
+    return [p for p in (value or '').split(':') if p]
+
+
+def gazebo_environment(env, share_dir, rospack=('rospack',)):
+    """A copy of `env` whose Gazebo paths also hold the package exports and this
+    package's own folder (for `worlds/...` names). Entries already set come first, as
+    in Gazebo."""
+    env = dict(env)
+    for attrib, variable in EXPORTS:
+        paths = split(env.get(variable))
+        for path in exported_paths(attrib, rospack):
+            if path not in paths:
+                paths.append(path)
+        if variable == 'GAZEBO_RESOURCE_PATH' and share_dir not in paths:
+            paths.append(share_dir)
+        env[variable] = ':'.join(paths)
+    return env
+
+
+class WorldNotFound(Exception):
+    pass
+
+
+def resolve_world(name, env, cwd=None):
+    """The file a world argument names: an existing path (absolute or relative to
+    `cwd`), else a name looked up in every GAZEBO_RESOURCE_PATH folder, as gzserver does.
+    Raises WorldNotFound naming the folders searched."""
+    cwd = cwd or os.getcwd()
+    candidate = name if os.path.isabs(name) else os.path.join(cwd, name)
+    if os.path.isfile(candidate):
+        return os.path.abspath(candidate)
+    searched = split(env.get('GAZEBO_RESOURCE_PATH'))
+    for folder in searched:
+        path = os.path.join(folder, name)
+        if os.path.isfile(path):
+            return os.path.abspath(path)
+    raise WorldNotFound('world "%s" not found: not a file, and not in GAZEBO_RESOURCE_PATH (%s)'
+                        % (name, ', '.join(searched) or 'empty'))

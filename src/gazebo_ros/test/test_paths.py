@@ -1,0 +1,78 @@
+#!/usr/bin/python3
+"""Model and world paths collected as gazebo_ros collects them."""
+import os
+import shutil
+import stat
+import tempfile
+import unittest
+
+from gazebo_ros import paths, server
+
+
+class TestPaths(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp()
+        # A stand-in for rospack that answers `rospack plugins --attrib=A gazebo_ros`.
+        self.rospack = os.path.join(self.tmp, 'rospack')
+        with open(self.rospack, 'w') as script:
+            script.write('#!/bin/sh\ncase "$2" in\n'
+                         '  --attrib=gazebo_model_path) echo "pkg_a /a/models:/a/more";'
+                         ' echo "pkg_b /b/models";;\n'
+                         '  --attrib=gazebo_media_path) echo "pkg_a /a/media";;\n'
+                         'esac\n')
+        os.chmod(self.rospack, stat.S_IRWXU)
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def test_exports_follow_what_the_environment_already_holds(self):
+        env = paths.gazebo_environment({'GAZEBO_MODEL_PATH': '/mine:/a/more'}, '/share/gz',
+                                       rospack=(self.rospack,))
+        self.assertEqual(env['GAZEBO_MODEL_PATH'], '/mine:/a/more:/a/models:/b/models')
+        self.assertEqual(env['GAZEBO_RESOURCE_PATH'], '/a/media:/share/gz')
+        self.assertEqual(env['GAZEBO_PLUGIN_PATH'], '')
+
+    def test_real_rospack_lists_exports_of_packages_depending_on_gazebo_ros(self):
+        # Every path rospack reports must be a string without the package name in it.
+        for path in paths.exported_paths('gazebo_model_path'):
+            self.assertTrue(os.path.isabs(path), path)
+
+    def test_world_names_resolve_like_gzserver(self):
+        os.makedirs(os.path.join(self.tmp, 'res', 'worlds'))
+        world = os.path.join(self.tmp, 'res', 'worlds', 'empty.world')
+        open(world, 'w').close()
+        env = {'GAZEBO_RESOURCE_PATH': '/nowhere:' + os.path.join(self.tmp, 'res')}
+        self.assertEqual(paths.resolve_world('worlds/empty.world', env, cwd='/'), world)
+        self.assertEqual(paths.resolve_world(world, {}, cwd='/'), world)
+        self.assertEqual(paths.resolve_world('res/worlds/empty.world', {}, cwd=self.tmp), world)
+        with self.assertRaisesRegex(paths.WorldNotFound,
+                                    r'world "worlds/moon.world" not found: .*\(/nowhere, '):
+            paths.resolve_world('worlds/moon.world', env, cwd='/')
+
+
+class TestServerArgs(unittest.TestCase):
+    def test_empty_world_launch_arguments(self):
+        # empty_world.launch paused:=true verbose:=true extra_gazebo_args:="--seed 7"
+        args = server.parse(['-u', '', '--verbose', '-e', 'ode', '--seed', '7',
+                             'worlds/empty.world', '__name:=gazebo', '__log:=/tmp/x.log'])
+        self.assertTrue(args.paused)
+        self.assertEqual(args.world, 'worlds/empty.world')
+        self.assertEqual(args.seed, 7)
+        self.assertEqual(args.ignored, ['--verbose'])
+        self.assertEqual(server.node_arguments(args, '/w/empty.world'),
+                         ['_world_file:=/w/empty.world', '_paused:=true', '_seed:=7',
+                          '__name:=gazebo', '__log:=/tmp/x.log'])
+
+    def test_recording_and_physics_are_accepted(self):
+        args = server.parse(['-r', '-e', 'bullet', '--record_path', '/tmp/r', 'my.world'])
+        self.assertFalse(args.paused)
+        self.assertEqual(args.physics, 'bullet')
+        self.assertEqual(args.ignored, ['-r', '--record_path /tmp/r'])
+
+    def test_an_option_without_its_value_is_an_error(self):
+        with self.assertRaisesRegex(ValueError, 'gzserver option -e needs a value'):
+            server.parse(['-e'])
+
+
+if __name__ == '__main__':
+    unittest.main()
