@@ -6,16 +6,18 @@ import unittest
 
 import numpy as np
 
-from mobility_testing.images import count_colour, load_png, parse_ppm
+from mobility_testing.images import count_colour, load_png, save_png
 
 
 class ImagesTest(unittest.TestCase):
-    def test_parse_ppm_reads_pixels_in_row_order(self):
-        data = b'P6\n# comment\n2 1\n255\n' + bytes([255, 0, 0, 0, 0, 255])
-        image = parse_ppm(data)
-        self.assertEqual(image.shape, (1, 2, 3))
-        self.assertEqual(image[0, 0].tolist(), [255, 0, 0])
-        self.assertEqual(image[0, 1].tolist(), [0, 0, 255])
+    def test_save_png_keeps_rgb_order(self):
+        image = np.array([[[255, 0, 0], [0, 0, 255]]], dtype=np.uint8)
+        with tempfile.TemporaryDirectory() as tmp:
+            path = save_png(image, os.path.join(tmp, 'two.png'))
+            # ImageMagick reads the file as a third party: red first, then blue.
+            rgb = subprocess.run(['/usr/bin/convert', path, '-depth', '8', 'rgb:-'],
+                                 check=True, capture_output=True).stdout
+        self.assertEqual(list(rgb), [255, 0, 0, 0, 0, 255])
 
     def test_load_png_and_count_colour(self):
         with tempfile.TemporaryDirectory() as tmp:

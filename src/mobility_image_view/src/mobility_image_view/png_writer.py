@@ -1,17 +1,12 @@
-"""A small PNG encoder (8- and 16-bit grey, RGB and RGBA), so saved frames keep every bit."""
+"""PNG files of frames (8- and 16-bit grey, RGB and RGBA) through OpenCV, so saved frames
+keep every bit."""
 import os
-import struct
-import zlib
 
+import cv2
 import numpy as np
 
-# channels -> PNG colour type
-_COLOUR_TYPES = {1: 0, 3: 2, 4: 6}
-
-
-def _chunk(kind, payload):
-    body = kind + payload
-    return struct.pack('>I', len(payload)) + body + struct.pack('>I', zlib.crc32(body))
+# channels -> OpenCV's channel order for an RGB(A) array
+_TO_OPENCV = {1: None, 3: cv2.COLOR_RGB2BGR, 4: cv2.COLOR_RGBA2BGRA}
 
 
 def encode_png(pixels):
@@ -20,17 +15,15 @@ def encode_png(pixels):
     if pixels.dtype not in (np.uint8, np.uint16):
         raise ValueError(f'PNG pixels must be uint8 or uint16, not {pixels.dtype}')
     channels = 1 if pixels.ndim == 2 else pixels.shape[2]
-    if pixels.ndim not in (2, 3) or channels not in _COLOUR_TYPES:
+    if pixels.ndim not in (2, 3) or channels not in _TO_OPENCV:
         raise ValueError(f'PNG pixels must be (H, W), (H, W, 3) or (H, W, 4), '
                          f'not {pixels.shape}')
-    height, width = pixels.shape[:2]
-    bit_depth = 8 * pixels.dtype.itemsize
-    rows = pixels.astype(pixels.dtype.newbyteorder('>')).reshape(height, -1).view(np.uint8)
-    # Each row starts with filter type 0 (none).
-    raw = np.hstack([np.zeros((height, 1), dtype=np.uint8), rows]).tobytes()
-    header = struct.pack('>IIBBBBB', width, height, bit_depth, _COLOUR_TYPES[channels], 0, 0, 0)
-    return (b'\x89PNG\r\n\x1a\n' + _chunk(b'IHDR', header) +
-            _chunk(b'IDAT', zlib.compress(raw, 6)) + _chunk(b'IEND', b''))
+    if _TO_OPENCV[channels] is not None:
+        pixels = cv2.cvtColor(pixels, _TO_OPENCV[channels])
+    ok, data = cv2.imencode('.png', pixels)
+    if not ok:
+        raise ValueError(f'OpenCV could not encode a {pixels.shape} {pixels.dtype} PNG')
+    return data.tobytes()
 
 
 def write_png(path, pixels):

@@ -1,35 +1,14 @@
 """Reading screenshots and measuring colours in them."""
-import subprocess
-
+import cv2
 import numpy as np
 
 
 def load_png(path):
-    """Returns an image file as an (H, W, 3) uint8 RGB array (via ImageMagick's convert)."""
-    out = subprocess.run(['/usr/bin/convert', path, '-depth', '8', 'ppm:-'], check=True,
-                         capture_output=True).stdout
-    return parse_ppm(out)
-
-
-def parse_ppm(data):
-    """Parses a binary PPM (P6, maxval 255) into an (H, W, 3) uint8 array."""
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b'#':
-            pos = data.index(b'\n', pos) + 1
-            continue
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    if fields[0] != b'P6' or int(fields[3]) != 255:
-        raise ValueError(f'not an 8-bit binary PPM: {fields!r}')
-    width, height = int(fields[1]), int(fields[2])
-    pixels = np.frombuffer(data, dtype=np.uint8, count=width * height * 3, offset=pos + 1)
-    return pixels.reshape(height, width, 3)
+    """Returns an image file as an (H, W, 3) uint8 RGB array."""
+    pixels = cv2.imread(path, cv2.IMREAD_COLOR)
+    if pixels is None:
+        raise ValueError(f'{path}: not a readable image')
+    return cv2.cvtColor(pixels, cv2.COLOR_BGR2RGB)
 
 
 def colour_mask(image, rgb, tolerance=30):
@@ -80,9 +59,7 @@ def region_of_colour(image, rgb, tolerance=3, min_fraction=0.2):
 
 
 def save_png(image, path):
-    """Writes an (H, W, 3) uint8 array as a PNG file (via ImageMagick's convert)."""
-    height, width = image.shape[:2]
-    header = f'P6\n{width} {height}\n255\n'.encode()
-    subprocess.run(['/usr/bin/convert', 'ppm:-', path], input=header + image.tobytes(),
-                   check=True, capture_output=True)
+    """Writes an (H, W, 3) uint8 RGB array as a PNG file."""
+    if not cv2.imwrite(path, cv2.cvtColor(np.ascontiguousarray(image), cv2.COLOR_RGB2BGR)):
+        raise ValueError(f'{path}: could not be written')
     return path
