@@ -241,3 +241,32 @@ TEST_F(MeshWorld, RobotFileResolvesRelativeMeshesFromItsFolderAndSharesThem) {
   run(&sim, 2.0);
   EXPECT_NEAR(sim.modelPose("box").position.z(), 0.2, 0.002);
 }
+
+TEST_F(MeshWorld, LidarSeesAMovingBodysConvexHullWhereItIs) {
+  // A 0.4 m box robot (one STL mesh, simulated as its hull) resting 1 m ahead of the Burger.
+  bullet_sim_test::writeBinaryStl(dir_ + "/crate.stl", boxTriangles(Vector3d(0.4, 0.4, 0.4)));
+  const std::string urdf =
+      "<robot name='crate'><link name='base_link'><collision><geometry><mesh filename='" + dir_ +
+      "/crate.stl'/></geometry></collision><inertial><mass value='1'/><inertia ixx='0.03' "
+      "ixy='0' ixz='0' iyy='0.03' iyz='0' izz='0.03'/></inertial></link></robot>";
+  RobotSpec burger = bullet_sim_test::burgerSpec();
+  burger.rays[0].noise_stddev_m = 0;
+  burger.rays[0].range_resolution_m = 0;
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", burger, Pose3());
+  Pose3 crate_pose;
+  crate_pose.position = Vector3d(1.0, 0, 0.2);
+  sim.spawnRobot("crate", parseRobot(urdf, "crate", plainResolver()), crate_pose);
+  run(&sim, 0.5);
+  Vector3d lidar;
+  for (const LinkPose& link : sim.linkPoses("burger"))
+    if (link.link == "base_scan") lidar = link.pose.position;
+  const double face_x = sim.modelPose("crate").position.x() - 0.2;
+  const LaserScanData scan = sim.readRay("burger", 0);
+  for (size_t i : {size_t(0), size_t(5), scan.ranges.size() - 5}) {
+    SCOPED_TRACE("ray " + std::to_string(i));
+    EXPECT_NEAR(scan.ranges[i], (face_x - lidar.x()) / std::cos(i * scan.angle_increment), 0.002);
+  }
+  // Beside it (45 degrees) there is nothing.
+  EXPECT_TRUE(std::isinf(scan.ranges[std::lround((M_PI / 4) / scan.angle_increment)]));
+}
