@@ -182,9 +182,9 @@ class WorldReader {
     s->kind = StaticShape::Mesh;
     s->size = Eigen::Vector3d(scale.X(), scale.Y(), scale.Z());
     if (!s->size.allFinite() || (s->size.array() == 0).any()) {
-      throw LoadError(where + ": <scale> '" + std::to_string(scale.X()) + " " +
-                      std::to_string(scale.Y()) + " " + std::to_string(scale.Z()) +
-                      "' must be finite and non-zero");
+      std::ostringstream text;
+      text << scale.X() << " " << scale.Y() << " " << scale.Z();
+      throw LoadError(where + ": <scale> '" + text.str() + "' must be finite and non-zero");
     }
     const std::string defined_in = mesh.FilePath().empty() ? source_ : mesh.FilePath();
     std::error_code ec;

@@ -270,3 +270,14 @@ TEST_F(MeshWorld, LidarSeesAMovingBodysConvexHullWhereItIs) {
   // Beside it (45 degrees) there is nothing.
   EXPECT_TRUE(std::isinf(scan.ranges[std::lround((M_PI / 4) / scan.angle_increment)]));
 }
+
+TEST_F(MeshWorld, ZeroWorldMeshScaleNamesModelLinkAndScale) {
+  bullet_sim_test::writeBinaryStl(dir_ + "/box.stl", boxTriangles(Vector3d(1, 1, 1)));
+  const std::string path = writeWorld(
+      dir_, "<model name='flat'><static>true</static><link name='link'><collision name='c'>"
+            "<geometry><mesh><uri>box.stl</uri><scale>1 1 0</scale></mesh></geometry>"
+            "</collision></link></model>");
+  EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path, plainResolver()); }),
+            path + ": model 'flat' link 'link' collision mesh 'box.stl': <scale> '1 1 0' must be "
+                   "finite and non-zero");
+}
