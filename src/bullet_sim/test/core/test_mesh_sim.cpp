@@ -281,3 +281,34 @@ TEST_F(MeshWorld, ZeroWorldMeshScaleNamesModelLinkAndScale) {
             path + ": model 'flat' link 'link' collision mesh 'box.stl': <scale> '1 1 0' must be "
                    "finite and non-zero");
 }
+
+TEST_F(MeshWorld, FinelyFacetedMeshIsReducedAndStillRestsOnItsFlatFace) {
+  // 200 facets: 400 points, more than a hull keeps, so btShapeHull reduces it; the reduced
+  // hull keeps points of both end faces, so the drum stands on its end at z = length / 2.
+  bullet_sim_test::writeBinaryStl(dir_ + "/drum.stl",
+                                  bullet_sim_test::cylinderTriangles(0.1, 0.3, 200));
+  const std::string urdf =
+      "<robot name='drum'><link name='base_link'><collision><geometry><mesh filename='" + dir_ +
+      "/drum.stl'/></geometry></collision><inertial><mass value='1'/><inertia ixx='0.01' "
+      "ixy='0' ixz='0' iyy='0.01' iyz='0' izz='0.005'/></inertial></link></robot>";
+  RobotSpec burger = bullet_sim_test::burgerSpec();
+  burger.rays[0].noise_stddev_m = 0;
+  burger.rays[0].range_resolution_m = 0;
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  Pose3 pose;
+  pose.position.z() = 0.4;
+  sim.spawnRobot("drum", parseRobot(urdf, "drum", plainResolver()), pose);
+  Pose3 burger_pose;
+  burger_pose.position.x() = -1.0;
+  sim.spawnRobot("burger", burger, burger_pose);
+  run(&sim, 2.0);
+  const Pose3 rest = sim.modelPose("drum");
+  EXPECT_NEAR(rest.position.z(), 0.15, 0.002);
+  EXPECT_LT(rest.orientation.angularDistance(Eigen::Quaterniond::Identity()), 0.01);
+  // Still round: the lidar finds its side at its radius, 0.1 m from its axis.
+  Vector3d lidar;
+  for (const LinkPose& link : sim.linkPoses("burger"))
+    if (link.link == "base_scan") lidar = link.pose.position;
+  const LaserScanData scan = sim.readRay("burger", 0);
+  EXPECT_NEAR(scan.ranges[0], rest.position.x() - 0.1 - lidar.x(), 0.001);
+}
