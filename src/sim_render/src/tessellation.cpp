@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +17,7 @@ const char* kindName(ShapeKind kind) {
     case ShapeKind::Cylinder: return "cylinder";
     case ShapeKind::Sphere: return "sphere";
     case ShapeKind::Plane: return "plane";
+    case ShapeKind::Mesh: return "mesh";
   }
   return "unknown";
 }
@@ -121,6 +123,39 @@ void buildPlane(Mesh& mesh, const ShapeSpec& spec, const TessellationOptions& op
           R * Eigen::Vector3d(hx, hy, 0), R * Eigen::Vector3d(-hx, hy, 0));
 }
 
+// The caller's triangles scaled; a mirroring scale turns the winding round so that faces
+// still point outwards. Degenerate triangles are dropped.
+void buildScaledMesh(Mesh& mesh, const ShapeSpec& spec) {
+  if (!spec.triangles || spec.triangles->triangles.empty()) {
+    throw std::invalid_argument("mesh has no triangles");
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if (!std::isfinite(spec.size[axis]) || spec.size[axis] == 0.0) {
+      std::ostringstream msg;
+      msg << "mesh scale must be finite and non-zero, got " << spec.size.transpose();
+      throw std::invalid_argument(msg.str());
+    }
+  }
+  const Mesh& source = *spec.triangles;
+  mesh.vertices.reserve(source.vertices.size());
+  for (const Eigen::Vector3d& v : source.vertices) mesh.vertices.push_back(v.cwiseProduct(spec.size));
+  const bool mirrored = spec.size.prod() < 0;
+  for (std::array<std::uint32_t, 3> tri : source.triangles) {
+    if (std::max({tri[0], tri[1], tri[2]}) >= mesh.vertices.size()) {
+      throw std::invalid_argument("mesh triangle index " +
+                                  std::to_string(std::max({tri[0], tri[1], tri[2]})) +
+                                  " is beyond its " + std::to_string(mesh.vertices.size()) +
+                                  " vertices");
+    }
+    if (mirrored) std::swap(tri[1], tri[2]);
+    const Eigen::Vector3d& p = mesh.vertices[tri[0]];
+    const Eigen::Vector3d n = (mesh.vertices[tri[1]] - p).cross(mesh.vertices[tri[2]] - p);
+    if (n.norm() < 1e-15) continue;
+    mesh.triangles.push_back(tri);
+    mesh.face_normals.push_back(n.normalized());
+  }
+}
+
 }  // namespace
 
 Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
@@ -146,6 +181,9 @@ Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
       break;
     case ShapeKind::Plane:
       buildPlane(mesh, spec, options);
+      break;
+    case ShapeKind::Mesh:
+      buildScaledMesh(mesh, spec);
       break;
   }
   for (const Eigen::Vector3d& v : mesh.vertices) {
@@ -183,6 +221,16 @@ ShapeSpec ShapeSpec::plane(double size_x_m, double size_y_m, const Eigen::Vector
   s.kind = ShapeKind::Plane;
   s.size = Eigen::Vector3d(size_x_m, size_y_m, 0);
   s.rgba = rgba;
+  return s;
+}
+
+ShapeSpec ShapeSpec::mesh(std::shared_ptr<const Mesh> triangles, const Eigen::Vector3d& scale,
+                          const Eigen::Vector4f& rgba) {
+  ShapeSpec s;
+  s.kind = ShapeKind::Mesh;
+  s.size = scale;
+  s.rgba = rgba;
+  s.triangles = std::move(triangles);
   return s;
 }
 

@@ -81,6 +81,23 @@ TEST(Render, BoxCoversItsProjectedRectangle) {
   EXPECT_NEAR(renderer.depthAt(320, 240), 2.9, 1e-4);
 }
 
+TEST(Render, MeshBoxDrawsExactlyLikeThePrimitiveBox) {
+  // The primitive's own triangles handed back as a mesh, scaled from a unit box, and turned.
+  const std::shared_ptr<const Mesh> unit =
+      std::make_shared<Mesh>(tessellate(ShapeSpec::box(1, 1, 1, kRed)));
+  Eigen::Isometry3d pose = at(2.5, -0.2, 0.1);
+  pose.rotate(Eigen::AngleAxisd(0.6, Eigen::Vector3d(0.2, 0.3, 1).normalized()));
+  Scene primitive, mesh;
+  primitive.add(ShapeSpec::box(0.3, 0.8, 0.5, kRed), pose);
+  mesh.add(ShapeSpec::mesh(unit, Eigen::Vector3d(0.3, 0.8, 0.5), kRed), pose);
+  Renderer renderer(squareCamera());
+  std::vector<std::uint8_t> a, b;
+  renderer.render(primitive, Eigen::Isometry3d::Identity(), a);
+  renderer.render(mesh, Eigen::Isometry3d::Identity(), b);
+  EXPECT_EQ(a, b);
+  EXPECT_GT(renderer.lastStats().triangles_drawn, 0u);
+}
+
 TEST(Render, HorizonOfTheGroundIsAtCyForALevelCamera) {
   for (double plane_size : {0.0, 5000.0}) {  // infinite and large finite
     Scene scene;

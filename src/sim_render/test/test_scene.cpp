@@ -85,6 +85,53 @@ TEST(Tessellation, BadSizesAreNamed) {
   EXPECT_NE(tessellationError(no_normal).find("plane normal"), std::string::npos);
 }
 
+namespace {
+
+/// A unit tetrahedron with counter-clockwise faces seen from outside, corner at the origin.
+std::shared_ptr<const Mesh> tetrahedron() {
+  auto mesh = std::make_shared<Mesh>();
+  mesh->vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  mesh->triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return mesh;
+}
+
+// Every face points away from the tetrahedron's centroid, normal agreeing with the winding.
+void expectOutwardFrom(const Mesh& mesh, const Eigen::Vector3d& centre) {
+  ASSERT_EQ(mesh.triangles.size(), mesh.face_normals.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const Eigen::Vector3d& a = mesh.vertices[tri[0]];
+    const Eigen::Vector3d& n = mesh.face_normals[t];
+    EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+    EXPECT_GT((a - centre).dot(n), 0.0) << "triangle " << t;
+    EXPECT_GT((mesh.vertices[tri[1]] - a).cross(mesh.vertices[tri[2]] - a).dot(n), 0.0);
+  }
+}
+
+}  // namespace
+
+TEST(Tessellation, MeshIsScaledWithOutwardNormalsEvenWhenMirrored) {
+  const Mesh scaled = tessellate(ShapeSpec::mesh(tetrahedron(), Eigen::Vector3d(2, 3, 4), kGrey));
+  ASSERT_EQ(scaled.vertices.size(), 4u);
+  EXPECT_TRUE(scaled.vertices[3].isApprox(Eigen::Vector3d(0, 0, 4)));
+  EXPECT_NEAR(scaled.bounding_radius_m, 4.0, 1e-12);
+  expectOutwardFrom(scaled, Eigen::Vector3d(2, 3, 4) / 4);
+  // A negative scale mirrors the mesh; its faces must still point outwards.
+  const Mesh mirrored = tessellate(ShapeSpec::mesh(tetrahedron(), Eigen::Vector3d(-1, 1, 1), kGrey));
+  expectOutwardFrom(mirrored, Eigen::Vector3d(-1, 1, 1) / 4);
+}
+
+TEST(Tessellation, BadMeshesAreNamed) {
+  EXPECT_EQ(tessellationError(ShapeSpec::mesh(nullptr, Eigen::Vector3d::Ones(), kGrey)),
+            "mesh has no triangles");
+  EXPECT_EQ(tessellationError(ShapeSpec::mesh(tetrahedron(), Eigen::Vector3d(1, 0, 1), kGrey)),
+            "mesh scale must be finite and non-zero, got 1 0 1");
+  auto broken = std::make_shared<Mesh>(*tetrahedron());
+  broken->triangles.push_back({0, 1, 9});
+  EXPECT_EQ(tessellationError(ShapeSpec::mesh(broken, Eigen::Vector3d::Ones(), kGrey)),
+            "mesh triangle index 9 is beyond its 4 vertices");
+}
+
 TEST(Scene, AddMoveRecolourRemove) {
   Scene scene;
   const ShapeId a = scene.add(ShapeSpec::box(1, 1, 1, kGrey), Eigen::Isometry3d::Identity());

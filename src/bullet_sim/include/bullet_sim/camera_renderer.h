@@ -54,7 +54,8 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 /// once it is deleted), so a frame only moves the robots' visuals to their current link
 /// poses and rasterizes. Every robot is drawn, including the one carrying the camera (a
 /// camera inside its own housing does not see it: faces are single-sided). Mesh visuals
-/// are skipped with a warning. Not thread-safe.
+/// are drawn part by part, each part in its own material colour or else the visual's.
+/// Not thread-safe.
 class CameraRenderer {
  public:
   /// Keeps a reference to `sim`, which must outlive the renderer.
@@ -69,7 +70,8 @@ class CameraRenderer {
   /// camera validateCamera() rejects.
   void render(const std::string& robot, size_t index, ImageData* image);
 
-  /// Visuals that could not be drawn (meshes, bad sizes), one message each.
+  /// Visuals that could not be drawn (bad sizes), one message each; meshes that could not
+  /// be read are in the robot's and the world's spec warnings instead.
   const std::vector<std::string>& warnings() const;
 
  private:

@@ -2,6 +2,7 @@
 #define BULLET_SIM_ROBOT_SPEC_H
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <urdf_model/model.h>
 #include <urdf_world/types.h>
 
+#include "bullet_sim/mesh.h"
 #include "bullet_sim/resource_paths.h"
 #include "bullet_sim/types.h"
 
@@ -63,8 +65,12 @@ struct VisualSpec {
   std::string link;
   enum Kind { Box, Cylinder, Sphere, Mesh } kind = Box;
   Pose3 pose_in_link;
-  Eigen::Vector3d size{0, 0, 0};  ///< box: x y z; cylinder: r r length; sphere: r r r
+  /// box: x y z; cylinder: r r length; sphere: r r r; mesh: its scale x y z
+  Eigen::Vector3d size{0, 0, 0};
+  /// The URDF <material> colour; a mesh part with a colour of its own keeps that (as RViz).
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  std::string mesh_uri;                       ///< Mesh: the <mesh filename> as written
+  std::shared_ptr<const TriangleMesh> mesh;   ///< Mesh: null when it could not be read
 };
 
 /// Everything the simulator needs from a robot description.
@@ -77,20 +83,33 @@ struct RobotSpec {
   std::vector<CameraSpec> cameras;
   std::optional<DiffDriveSpec> diff_drive;
   std::vector<VisualSpec> visuals;
+  /// The collision meshes, by <mesh filename> as written in the URDF.
+  std::map<std::string, std::shared_ptr<const TriangleMesh>> collision_meshes;
   /// Unsupported plugins/sensors, links with collision but no inertial, ...
   std::vector<std::string> warnings;
 };
 
 /// Parses a URDF document with urdfdom plus its Gazebo extension tags.
 /// @param source_name used in error messages ("robot_description" or a path).
-/// URIs in it (meshes) are looked up through `resolver`.
+/// URIs in it (meshes) are looked up through `resolver` (see loadRobotMeshes; relative ones
+/// from the folder of `source_name` when that is a file, else from the current folder).
 /// @throws LoadError naming the source, element and bad value.
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name,
                      const UriResolver& resolver);
 /// As above, with the resource paths of the environment (ROS_PACKAGE_PATH, GAZEBO_MODEL_PATH).
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name);
 
-/// Reads a URDF file and parses it as parseRobot does (the path names the source).
+/// Reads the meshes `spec`'s URDF names (through MeshCache::shared()): every collision
+/// <mesh> into spec->collision_meshes, every visual one into its VisualSpec. URIs resolve
+/// through `resolver`, relative ones from `base_dir`.
+/// @throws LoadError naming `source`, the link and the URI (and the path or folders
+/// searched) for a collision mesh that is missing or unreadable, or a scale that is not
+/// finite and non-zero; a visual mesh in that state becomes a warning and is not drawn.
+void loadRobotMeshes(const UriResolver& resolver, const std::string& base_dir,
+                     const std::string& source, RobotSpec* spec);
+
+/// Reads a URDF file and parses it as parseRobot does (the path names the source; relative
+/// mesh names resolve from the file's folder).
 /// @throws LoadError when the file cannot be read or parsed.
 RobotSpec parseRobotFile(const std::string& path);
 

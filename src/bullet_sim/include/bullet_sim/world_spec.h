@@ -1,22 +1,27 @@
 #ifndef BULLET_SIM_WORLD_SPEC_H
 #define BULLET_SIM_WORLD_SPEC_H
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "bullet_sim/mesh.h"
 #include "bullet_sim/resource_paths.h"
 #include "bullet_sim/types.h"
 
 namespace bullet_sim {
 
-/// One static collision/visual primitive of the world.
+/// One static collision/visual shape of the world.
 struct StaticShape {
-  enum Kind { Box, Cylinder, Sphere, Plane } kind = Box;
+  enum Kind { Box, Cylinder, Sphere, Plane, Mesh } kind = Box;
   std::string model, link;
   Pose3 pose;                        ///< world pose of the geometry
   Eigen::Vector3d size{0, 0, 0};     ///< box: x y z; cylinder: r r length; sphere: r r r;
-                                     ///< plane: size_x size_y 0
+                                     ///< plane: size_x size_y 0; mesh: its scale x y z
   Eigen::Vector3d normal{0, 0, 1};   ///< plane only, in the geometry frame
+  /// Mesh only: its triangles (collision: the triangle mesh itself, as the shape is static)
+  std::shared_ptr<const TriangleMesh> mesh;
+  /// The material colour; a mesh part with a colour of its own in the file keeps that.
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
   bool collides = true;              ///< false for visual-only geometry
 };

@@ -47,6 +47,71 @@ const Pose3* findLink(const std::vector<LinkPose>& poses, const std::string& lin
   return nullptr;
 }
 
+/// The renderer's triangles of each part of a mesh file, made once per file.
+class MeshTriangles {
+ public:
+  const std::vector<std::shared_ptr<const sim_render::Mesh>>& of(
+      const std::shared_ptr<const TriangleMesh>& mesh) {
+    auto [it, inserted] = parts_.try_emplace(mesh);
+    if (inserted) {
+      for (const MeshPart& part : mesh->parts) {
+        auto triangles = std::make_shared<sim_render::Mesh>();
+        triangles->vertices = part.vertices;
+        triangles->triangles = part.triangles;
+        it->second.push_back(std::move(triangles));
+      }
+    }
+    return it->second;
+  }
+
+ private:
+  std::map<std::shared_ptr<const TriangleMesh>,
+           std::vector<std::shared_ptr<const sim_render::Mesh>>> parts_;
+};
+
+/// One renderer shape per part of a mesh; a part without a colour of its own takes `rgba`.
+/// A mesh that could not be read (null) has no shapes: the loader already warned.
+std::vector<sim_render::ShapeSpec> meshShapes(const std::shared_ptr<const TriangleMesh>& mesh,
+                                              const Eigen::Vector3d& scale,
+                                              const Eigen::Vector4f& rgba,
+                                              MeshTriangles* triangles) {
+  std::vector<sim_render::ShapeSpec> shapes;
+  if (!mesh) return shapes;
+  const auto& parts = triangles->of(mesh);
+  for (size_t i = 0; i < parts.size(); ++i) {
+    shapes.push_back(
+        sim_render::ShapeSpec::mesh(parts[i], scale, mesh->parts[i].rgba.value_or(rgba)));
+  }
+  return shapes;
+}
+
+std::vector<sim_render::ShapeSpec> shapesOf(const StaticShape& s, MeshTriangles* triangles) {
+  using sim_render::ShapeSpec;
+  switch (s.kind) {
+    case StaticShape::Box: return {ShapeSpec::box(s.size.x(), s.size.y(), s.size.z(), s.rgba)};
+    case StaticShape::Cylinder: return {ShapeSpec::cylinder(s.size.x(), s.size.z(), s.rgba)};
+    case StaticShape::Sphere: return {ShapeSpec::sphere(s.size.x(), s.rgba)};
+    case StaticShape::Plane: {
+      ShapeSpec plane = ShapeSpec::plane(s.size.x(), s.size.y(), s.rgba);
+      plane.normal = s.normal;
+      return {plane};
+    }
+    case StaticShape::Mesh: return meshShapes(s.mesh, s.size, s.rgba, triangles);
+  }
+  return {};
+}
+
+std::vector<sim_render::ShapeSpec> shapesOf(const VisualSpec& v, MeshTriangles* triangles) {
+  using sim_render::ShapeSpec;
+  switch (v.kind) {
+    case VisualSpec::Box: return {ShapeSpec::box(v.size.x(), v.size.y(), v.size.z(), v.rgba)};
+    case VisualSpec::Cylinder: return {ShapeSpec::cylinder(v.size.x(), v.size.z(), v.rgba)};
+    case VisualSpec::Sphere: return {ShapeSpec::sphere(v.size.x(), v.rgba)};
+    case VisualSpec::Mesh: return meshShapes(v.mesh, v.size, v.rgba, triangles);
+  }
+  return {};
+}
+
 void toMono(const std::vector<uint8_t>& rgb, std::vector<uint8_t>* mono) {
   mono->resize(rgb.size() / 3);
   for (size_t i = 0; i < mono->size(); ++i) {
@@ -106,13 +171,13 @@ struct CameraRenderer::Impl {
     scene.lighting().direction = world.light_direction;
     scene.lighting().ambient = world.ambient.head<3>();
     for (const StaticShape& s : world.shapes) {
-      const sim_render::ShapeSpec spec{static_cast<sim_render::ShapeKind>(s.kind), s.size,
-                                       s.normal, s.rgba};
-      try {
-        scene.add(spec, toIsometry(s.pose));
-      } catch (const std::invalid_argument& e) {
-        warnings.push_back("world shape of model '" + s.model + "' link '" + s.link +
-                           "' not drawn: " + e.what());
+      for (const sim_render::ShapeSpec& spec : shapesOf(s, &mesh_triangles)) {
+        try {
+          scene.add(spec, toIsometry(s.pose));
+        } catch (const std::invalid_argument& e) {
+          warnings.push_back("world shape of model '" + s.model + "' link '" + s.link +
+                             "' not drawn: " + e.what());
+        }
       }
     }
   }
@@ -122,18 +187,14 @@ struct CameraRenderer::Impl {
     robot->renderers.resize(spec.cameras.size());
     robot->camera_link_hints.assign(spec.cameras.size(), 0);
     for (const VisualSpec& v : spec.visuals) {
-      const std::string where = "robot '" + name + "' link '" + v.link + "': visual";
-      if (v.kind == VisualSpec::Mesh) {
-        warnings.push_back(where + " is a mesh, which the camera does not draw");
-        continue;
-      }
-      const sim_render::ShapeSpec shape{static_cast<sim_render::ShapeKind>(v.kind), v.size,
-                                        Eigen::Vector3d::UnitZ(), v.rgba};
-      try {
-        const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
-        robot->visuals.push_back({v.link, 0, T_link_visual, scene.add(shape, T_link_visual)});
-      } catch (const std::invalid_argument& e) {
-        warnings.push_back(where + " not drawn: " + e.what());
+      const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
+      for (const sim_render::ShapeSpec& shape : shapesOf(v, &mesh_triangles)) {
+        try {
+          robot->visuals.push_back({v.link, 0, T_link_visual, scene.add(shape, T_link_visual)});
+        } catch (const std::invalid_argument& e) {
+          warnings.push_back("robot '" + name + "' link '" + v.link + "': visual not drawn: " +
+                             e.what());
+        }
       }
     }
   }
@@ -180,6 +241,7 @@ struct CameraRenderer::Impl {
   }
 
   const Simulation& sim;
+  MeshTriangles mesh_triangles;
   sim_render::Scene scene;
   std::map<std::string, RobotScene> robots;
   std::vector<std::string> warnings;

@@ -4,12 +4,11 @@
 #include <cmath>
 
 #include "bullet_convert.h"
+#include "collision_shapes.h"
 
 namespace bullet_sim {
 namespace {
 
-/// Bullet's default 4 cm margin would swell the Burger's millimetre parts.
-constexpr double kMarginM = 0.0005;
 /// Below these speeds for a while a robot's bodies go to sleep (m/s, rad/s).
 constexpr double kSleepLinearMps = 0.002;
 constexpr double kSleepAngularRadps = 0.01;
@@ -19,20 +18,13 @@ constexpr double kMotorStiffnessPerS = 20.0;
 constexpr double kMaxMotorLagRad = 0.05;
 
 std::unique_ptr<btCollisionShape> makeShape(const CollisionPlan& c) {
-  std::unique_ptr<btConvexInternalShape> s;
   switch (c.kind) {
-    case CollisionPlan::Box:
-      s = std::make_unique<btBoxShape>(toBt(c.size * 0.5));
-      break;
-    case CollisionPlan::Cylinder:
-      s = std::make_unique<btCylinderShapeZ>(btVector3(c.size.x(), c.size.y(), c.size.z() * 0.5));
-      break;
-    case CollisionPlan::Sphere:
-      s = std::make_unique<btSphereShape>(c.size.x());
-      break;
+    case CollisionPlan::Box: return makeBox(c.size);
+    case CollisionPlan::Cylinder: return makeCylinder(c.size);
+    case CollisionPlan::Sphere: return makeSphere(c.size.x());
+    case CollisionPlan::Mesh: return makeConvexHull(*c.mesh, c.size);
   }
-  s->setMargin(kMarginM);
-  return s;
+  return nullptr;
 }
 
 /// With the reference frame on the parent, Bullet's hinge angle and motor

@@ -4,13 +4,13 @@
 #include <cmath>
 
 #include "bullet_convert.h"
+#include "collision_shapes.h"
 #include "physics_robot.h"
 #include "robot_plan.h"
 
 namespace bullet_sim {
 namespace {
 
-constexpr double kMarginM = 0.0005;
 constexpr double kStaticFriction = 1.0;
 /// How far above a ground plane its bounding box reaches: parts nearer than
 /// this are tested for contact every step.
@@ -52,22 +52,14 @@ class GroundPlaneShape : public btStaticPlaneShape {
 };
 
 std::unique_ptr<btCollisionShape> makeStaticShape(const StaticShape& s) {
-  std::unique_ptr<btCollisionShape> shape;
   switch (s.kind) {
-    case StaticShape::Box:
-      shape = std::make_unique<btBoxShape>(toBt(s.size * 0.5));
-      break;
-    case StaticShape::Cylinder:
-      shape = std::make_unique<btCylinderShapeZ>(btVector3(s.size.x(), s.size.y(), s.size.z() / 2));
-      break;
-    case StaticShape::Sphere:
-      shape = std::make_unique<btSphereShape>(s.size.x());
-      break;
-    case StaticShape::Plane:
-      return std::make_unique<GroundPlaneShape>(toBt(s.normal), 0.0);
+    case StaticShape::Box: return makeBox(s.size);
+    case StaticShape::Cylinder: return makeCylinder(s.size);
+    case StaticShape::Sphere: return makeSphere(s.size.x());
+    case StaticShape::Plane: return std::make_unique<GroundPlaneShape>(toBt(s.normal), 0.0);
+    case StaticShape::Mesh: return makeStaticTriangleMesh(*s.mesh, s.size);
   }
-  shape->setMargin(kMarginM);
-  return shape;
+  return nullptr;
 }
 
 }  // namespace

@@ -13,7 +13,8 @@ namespace {
 /// Bullet's general convex ray cast iterates (about 13k instructions per
 /// box a ray's bounding box touches), and walls and most robot parts are
 /// boxes. Compounds are opened here so that their boxes take the same path;
-/// every other shape goes to Bullet's own narrowphase.
+/// every other shape (cylinders, spheres, the triangle meshes of static world
+/// meshes, the convex hulls of robot meshes) goes to Bullet's own narrowphase.
 class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
  public:
   using ClosestRayResultCallback::ClosestRayResultCallback;

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -64,6 +65,7 @@ void addVisuals(const urdf::Link& link, RobotSpec* spec) {
         const auto& m = static_cast<const urdf::Mesh&>(*v->geometry);
         vis.kind = VisualSpec::Mesh;
         vis.size = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
+        vis.mesh_uri = m.filename;
         break;
       }
     }
@@ -75,6 +77,13 @@ void addVisuals(const urdf::Link& link, RobotSpec* spec) {
   }
 }
 
+/// The folder relative mesh names start from: the robot file's, else the current one.
+std::string baseDirOf(const std::string& source_name) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(source_name, ec)) return "";
+  return std::filesystem::path(source_name).parent_path().string();
+}
+
 }  // namespace
 
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name) {
@@ -82,7 +91,7 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
 }
 
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name,
-                     const UriResolver& /*resolver: mesh URIs*/) {
+                     const UriResolver& resolver) {
   RobotSpec spec;
   {
     CapturedLog log;
@@ -103,6 +112,7 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
     }
     addVisuals(*link, &spec);
   }
+  loadRobotMeshes(resolver, baseDirOf(source_name), source_name, &spec);
   parseGazeboExtensions(urdf_xml, source_name, &spec);
   for (const auto& surface : spec.surfaces) {
     if (!spec.urdf->getLink(surface.first)) {

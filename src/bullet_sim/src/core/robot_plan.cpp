@@ -118,10 +118,19 @@ class Planner {
           col.size = Eigen::Vector3d::Constant(s.radius);
           break;
         }
-        default:
-          plan_.warnings.push_back("link '" + link.name +
-                                   "': mesh collision geometry is not supported: skipped");
-          continue;
+        case urdf::Geometry::MESH: {
+          const auto& m = static_cast<const urdf::Mesh&>(*c->geometry);
+          const auto mesh = spec_.collision_meshes.find(m.filename);
+          if (mesh == spec_.collision_meshes.end()) {
+            plan_.warnings.push_back("link '" + link.name + "': collision mesh '" + m.filename +
+                                     "' was not loaded: skipped");
+            continue;
+          }
+          col.kind = CollisionPlan::Mesh;
+          col.size = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
+          col.mesh = mesh->second;
+          break;
+        }
       }
       plan_.bodies[body].collisions.push_back(col);
     }

@@ -2,6 +2,7 @@
 #define BULLET_SIM_CORE_ROBOT_PLAN_H
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -11,10 +12,12 @@
 
 namespace bullet_sim {
 
-/// One collision primitive of a body, in the body's root-link frame.
+/// One collision shape of a body, in the body's root-link frame.
 struct CollisionPlan {
-  enum Kind { Box, Cylinder, Sphere } kind = Box;
-  Eigen::Vector3d size{0, 0, 0};  ///< box: x y z; cylinder: r r length; sphere: r r r
+  enum Kind { Box, Cylinder, Sphere, Mesh } kind = Box;
+  /// box: x y z; cylinder: r r length; sphere: r r r; mesh: its scale x y z
+  Eigen::Vector3d size{0, 0, 0};
+  std::shared_ptr<const TriangleMesh> mesh;  ///< Mesh only (simulated as its convex hull)
   Eigen::Isometry3d T_root_geom = Eigen::Isometry3d::Identity();
   double friction = 1.0;          ///< from the link's mu1/mu2
 };
@@ -51,7 +54,8 @@ struct RobotPlan {
 
 /// Groups a URDF's links into bodies, combines their mass and inertia, and
 /// lists the hinges. Unsupported joint types (prismatic, planar, floating)
-/// are held fixed with a warning; mesh collisions are skipped with a warning.
+/// are held fixed with a warning. A mesh collision takes its mesh from
+/// spec.collision_meshes (one that is not there is skipped with a warning).
 RobotPlan planRobot(const RobotSpec& spec);
 
 Eigen::Isometry3d toIsometry(const Pose3& pose);

@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -5,6 +6,7 @@
 #include <tinyxml2.h>
 
 #include "bullet_sim/errors.h"
+#include "bullet_sim/mesh.h"
 #include "bullet_sim/world_spec.h"
 
 namespace bullet_sim {
@@ -78,6 +80,7 @@ class WorldReader {
     for (uint64_t i = 0; i < world.ModelCount(); ++i) {
       readModel(*world.ModelByIndex(i), Pose3d::Zero, &spec);
     }
+    spec.warnings.insert(spec.warnings.end(), mesh_warnings_.begin(), mesh_warnings_.end());
     return spec;
   }
 
@@ -116,7 +119,7 @@ class WorldReader {
   static void mergeVisual(const StaticShape& visual, WorldSpec* spec) {
     for (StaticShape& s : spec->shapes) {
       if (s.collides && s.model == visual.model && s.link == visual.link &&
-          s.kind == visual.kind && s.size.isApprox(visual.size, 1e-9) &&
+          s.kind == visual.kind && s.mesh == visual.mesh && s.size.isApprox(visual.size, 1e-9) &&
           (s.pose.position - visual.pose.position).norm() < 1e-9 &&
           s.pose.orientation.angularDistance(visual.pose.orientation) < 1e-9) {
         s.rgba = visual.rgba;
@@ -156,17 +159,51 @@ class WorldReader {
         s.normal = Eigen::Vector3d(n.X(), n.Y(), n.Z()).normalized();
         break;
       }
+      case sdf::GeometryType::MESH:
+        meshShape(model, link, *geom.MeshShape(), collides, &s);
+        break;
       default:
         throw LoadError(source_ + ": model '" + model.Name() + "' link '" + link.Name() + "' " +
                         (collides ? "collision" : "visual") + ": geometry type '" +
                         geometryName(geom.Type()) +
-                        "' is not supported (box, cylinder, sphere, plane are)");
+                        "' is not supported (box, cylinder, sphere, plane, mesh are)");
     }
     return s;
   }
 
+  /// A mesh: its file resolved from the folder of the SDF file that names it. A collision
+  /// mesh that cannot be read is an error, a visual one a warning (not drawn).
+  void meshShape(const sdf::Model& model, const sdf::Link& link, const sdf::Mesh& mesh,
+                 bool collides, StaticShape* s) const {
+    const std::string where = source_ + ": model '" + model.Name() + "' link '" + link.Name() +
+                              "' " + (collides ? "collision" : "visual") + " mesh '" +
+                              mesh.Uri() + "'";
+    const auto scale = mesh.Scale();
+    s->kind = StaticShape::Mesh;
+    s->size = Eigen::Vector3d(scale.X(), scale.Y(), scale.Z());
+    if (!s->size.allFinite() || (s->size.array() == 0).any()) {
+      std::ostringstream text;
+      text << scale.X() << " " << scale.Y() << " " << scale.Z();
+      throw LoadError(where + ": <scale> '" + text.str() + "' must be finite and non-zero");
+    }
+    const std::string defined_in = mesh.FilePath().empty() ? source_ : mesh.FilePath();
+    std::error_code ec;
+    const std::string base_dir = std::filesystem::is_regular_file(defined_in, ec)
+                                     ? std::filesystem::path(defined_in).parent_path().string()
+                                     : "";
+    std::string reason;
+    s->mesh = loadMeshUri(resolver_, mesh.Uri(), base_dir, &reason);
+    if (!s->mesh && collides) throw LoadError(where + ": " + reason);
+    if (!s->mesh) mesh_warnings_.push_back(where + ": " + reason + ": not drawn");
+    if (!mesh.Submesh().empty()) {
+      mesh_warnings_.push_back(where + ": <submesh> '" + mesh.Submesh() +
+                               "' is not supported: the whole mesh is used");
+    }
+  }
+
   std::string source_;
   const UriResolver& resolver_;
+  mutable std::vector<std::string> mesh_warnings_;  ///< moved into the spec by read()
 };
 
 std::string describe(const sdf::Errors& errors) {

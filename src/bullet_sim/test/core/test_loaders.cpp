@@ -185,10 +185,8 @@ TEST(WorldLoader, MalformedXmlNamesPathAndParserMessage) {
 }
 
 TEST(WorldLoader, UnsupportedGeometryNamesFileModelLinkAndType) {
-  const std::string path = fixture("world_mesh.world");
-  const std::string error = loadErrorOf([&] { loadWorldFile(path); });
-  EXPECT_NE(error.find(path + ": model 'statue' link 'body' collision: geometry type 'mesh' "
-                              "is not supported"),
-            std::string::npos)
-      << error;
+  const std::string path = fixture("world_heightmap.world");
+  EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path); }),
+            path + ": model 'statue' link 'body' collision: geometry type 'heightmap' is not "
+                   "supported (box, cylinder, sphere, plane, mesh are)");
 }

@@ -15,9 +15,10 @@ struct TessellationOptions {
   double infinite_plane_half_extent_m = 1e5;
 };
 
-/// Builds the mesh of `spec`. Throws std::invalid_argument naming the bad value when a size
-/// is not finite or not positive (planes: negative, or only one side zero), or when the
-/// options ask for too few segments.
+/// Builds the mesh of `spec` (for ShapeKind::Mesh: its triangles scaled). Throws
+/// std::invalid_argument naming the bad value when a size is not finite or not positive
+/// (planes: negative, or only one side zero; meshes: a scale zero or not finite, no
+/// triangles, an index beyond the vertices), or when the options ask for too few segments.
 Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options = {});
 
 }  // namespace sim_render

@@ -1,0 +1,80 @@
+#ifndef BULLET_SIM_MESH_H
+#define BULLET_SIM_MESH_H
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "bullet_sim/resource_paths.h"
+
+namespace bullet_sim {
+
+/// The triangles of one material of a mesh file.
+struct MeshPart {
+  std::vector<Eigen::Vector3d> vertices;                ///< metres, Z up
+  std::vector<std::array<uint32_t, 3>> triangles;       ///< counter-clockwise seen from outside
+  /// Diffuse colour of the part's material in the file (COLLADA, OBJ/MTL); none when the
+  /// file gives none (STL), and the visual's own colour is used instead.
+  std::optional<Eigen::Vector4f> rgba;
+};
+
+/// A mesh file as Gazebo shows it: every node transform applied, COLLADA's <unit> and
+/// <up_axis> honoured (metres, Z up), triangles only (points and lines dropped).
+/// Textures are not read.
+struct TriangleMesh {
+  std::string path;  ///< the file it was read from
+  std::vector<MeshPart> parts;
+
+  size_t triangleCount() const;
+  size_t vertexCount() const;
+};
+
+/// Reads mesh files with assimp (STL ASCII and binary, COLLADA, OBJ, and whatever else
+/// assimp reads) and keeps each one while anything uses it: a file is read once however
+/// many links, robots or world models name it, and read again when it changed on disk.
+/// Thread-safe.
+class MeshCache {
+ public:
+  /// The mesh in the file at `path` (an existing file's path, after URI resolution).
+  /// @throws LoadError "<path>: cannot read mesh: <assimp's reason>" when assimp cannot read
+  /// it, or "<path>: mesh has no triangles" when it holds none.
+  std::shared_ptr<const TriangleMesh> load(const std::string& path);
+
+  /// How many times a file was actually read (for tests of the sharing).
+  size_t fileReads() const;
+
+  /// The cache every loader of the process uses.
+  static MeshCache& shared();
+
+ private:
+  struct Entry {
+    std::weak_ptr<const TriangleMesh> mesh;
+    int64_t modified = 0;  ///< file time when read
+    uintmax_t size = 0;    ///< file size when read
+  };
+  mutable std::mutex mutex_;
+  std::map<std::string, Entry> entries_;
+  size_t file_reads_ = 0;
+};
+
+/// Reads one mesh file without any cache. @throws LoadError as MeshCache::load.
+TriangleMesh readMeshFile(const std::string& path);
+
+/// Resolves `uri` (relative ones from `base_dir`) and loads it through MeshCache::shared().
+/// Returns null and sets `reason` ("file not found (searched ...)" or the LoadError text
+/// naming the path and assimp's reason) when that fails.
+std::shared_ptr<const TriangleMesh> loadMeshUri(const UriResolver& resolver,
+                                                const std::string& uri,
+                                                const std::string& base_dir,
+                                                std::string* reason);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_MESH_H

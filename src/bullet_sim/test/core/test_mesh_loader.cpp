@@ -1,0 +1,169 @@
+// Mesh files through assimp: STL (binary, ASCII), COLLADA with <unit> and <up_axis>, OBJ
+// with MTL colours; the cache; unreadable files. Every file is written by the test.
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "bullet_sim/errors.h"
+#include "bullet_sim/mesh.h"
+#include "mesh_fixtures.h"
+
+using namespace bullet_sim;
+using bullet_sim_test::boxTriangles;
+using Eigen::Vector3d;
+
+namespace {
+
+Eigen::AlignedBox3d boundsOf(const TriangleMesh& mesh) {
+  Eigen::AlignedBox3d box;
+  for (const MeshPart& part : mesh.parts)
+    for (const Vector3d& v : part.vertices) box.extend(v);
+  return box;
+}
+
+/// Every triangle's normal points away from the mesh's centre (a closed convex mesh).
+void expectOutwardWinding(const TriangleMesh& mesh) {
+  const Vector3d centre = boundsOf(mesh).center();
+  for (const MeshPart& part : mesh.parts) {
+    for (const auto& t : part.triangles) {
+      const Vector3d& a = part.vertices[t[0]];
+      const Vector3d n = (part.vertices[t[1]] - a).cross(part.vertices[t[2]] - a);
+      EXPECT_GT(n.dot(a - centre), 0);
+    }
+  }
+}
+
+::testing::AssertionResult near(const Vector3d& actual, const Vector3d& expected) {
+  if ((actual - expected).norm() < 1e-6) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << actual.transpose() << " is not " << expected.transpose();
+}
+
+std::string loadErrorOf(const std::string& path) {
+  try {
+    readMeshFile(path);
+  } catch (const LoadError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+class MeshFiles : public ::testing::Test {
+ protected:
+  std::string file(const std::string& name) const { return dir_ + "/" + name; }
+  const std::string dir_ = bullet_sim_test::makeTempDir();
+};
+
+}  // namespace
+
+TEST_F(MeshFiles, BinaryAndAsciiStlCubeComeOutAsWritten) {
+  const auto cube = boxTriangles(Vector3d(0.2, 0.4, 0.6), Vector3d(1, 2, 3));
+  bullet_sim_test::writeBinaryStl(file("cube_binary.stl"), cube);
+  bullet_sim_test::writeAsciiStl(file("cube_ascii.stl"), cube);
+  for (const std::string name : {"cube_binary.stl", "cube_ascii.stl"}) {
+    SCOPED_TRACE(name);
+    const TriangleMesh mesh = readMeshFile(file(name));
+    ASSERT_EQ(mesh.parts.size(), 1u);
+    EXPECT_EQ(mesh.triangleCount(), 12u);
+    EXPECT_EQ(mesh.vertexCount(), 8u);  // corners shared between faces
+    EXPECT_FALSE(mesh.parts[0].rgba.has_value());  // STL has no colour: the visual's is used
+    const Eigen::AlignedBox3d box = boundsOf(mesh);
+    EXPECT_TRUE(near(box.min(), Vector3d(0.9, 1.8, 2.7)));
+    EXPECT_TRUE(near(box.max(), Vector3d(1.1, 2.2, 3.3)));
+    expectOutwardWinding(mesh);
+  }
+}
+
+TEST_F(MeshFiles, ColladaInCentimetresWithYUpComesOutInMetresWithZUp) {
+  // In the file: 100 cm along x, 50 cm along y (up), 20 cm along z, all from the origin.
+  const auto box = boxTriangles(Vector3d(100, 50, 20), Vector3d(50, 25, 10));
+  bullet_sim_test::writeCollada(file("y_up_cm.dae"), box, 0.01, "Y_UP",
+                                Eigen::Vector4f(0.8f, 0.1f, 0.2f, 1.0f));
+  const TriangleMesh mesh = readMeshFile(file("y_up_cm.dae"));
+  ASSERT_EQ(mesh.parts.size(), 1u);
+  EXPECT_EQ(mesh.triangleCount(), 12u);
+  // Stood up as Gazebo shows it (+90 degrees about x: y -> z, z -> -y), in metres: 1 m long,
+  // 0.5 m high, 0.2 m deep towards -y.
+  const Eigen::AlignedBox3d bounds = boundsOf(mesh);
+  EXPECT_TRUE(near(bounds.min(), Vector3d(0, -0.2, 0)));
+  EXPECT_TRUE(near(bounds.max(), Vector3d(1.0, 0, 0.5)));
+  ASSERT_TRUE(mesh.parts[0].rgba.has_value());
+  EXPECT_TRUE(mesh.parts[0].rgba->isApprox(Eigen::Vector4f(0.8f, 0.1f, 0.2f, 1.0f)));
+  expectOutwardWinding(mesh);
+}
+
+TEST_F(MeshFiles, ColladaWithZUpKeepsItsAxesAndUnitOneIsMetres) {
+  const auto box = boxTriangles(Vector3d(1, 0.5, 0.2), Vector3d(0.5, 0.25, 0.1));
+  bullet_sim_test::writeCollada(file("z_up_m.dae"), box, 1.0, "Z_UP",
+                                Eigen::Vector4f(0.1f, 0.9f, 0.1f, 1.0f));
+  const Eigen::AlignedBox3d bounds = boundsOf(readMeshFile(file("z_up_m.dae")));
+  EXPECT_TRUE(near(bounds.min(), Vector3d(0, 0, 0)));
+  EXPECT_TRUE(near(bounds.max(), Vector3d(1.0, 0.5, 0.2)));
+}
+
+TEST_F(MeshFiles, ObjGivesOnePartPerMaterialWithItsDiffuseColour) {
+  const auto left = boxTriangles(Vector3d(0.1, 0.1, 0.1), Vector3d(0, 1, 0));
+  const auto right = boxTriangles(Vector3d(0.2, 0.2, 0.2), Vector3d(0, -1, 0));
+  bullet_sim_test::writeObj(file("two.obj"), {left, right},
+                            {Eigen::Vector3f(1, 0, 0), Eigen::Vector3f(0, 0, 1)});
+  const TriangleMesh mesh = readMeshFile(file("two.obj"));
+  ASSERT_EQ(mesh.parts.size(), 2u);
+  int red = 0, blue = 0;
+  for (const MeshPart& part : mesh.parts) {
+    ASSERT_TRUE(part.rgba.has_value());
+    EXPECT_EQ(part.triangles.size(), 12u);
+    Eigen::AlignedBox3d box;
+    for (const Vector3d& v : part.vertices) box.extend(v);
+    if (part.rgba->isApprox(Eigen::Vector4f(1, 0, 0, 1))) {
+      ++red;
+      EXPECT_NEAR(box.center().y(), 1.0, 1e-6);
+      EXPECT_NEAR(box.sizes().x(), 0.1, 1e-6);
+    } else if (part.rgba->isApprox(Eigen::Vector4f(0, 0, 1, 1))) {
+      ++blue;
+      EXPECT_NEAR(box.center().y(), -1.0, 1e-6);
+      EXPECT_NEAR(box.sizes().x(), 0.2, 1e-6);
+    }
+  }
+  EXPECT_EQ(red, 1);
+  EXPECT_EQ(blue, 1);
+}
+
+TEST_F(MeshFiles, CacheReadsAFileOnceWhileItIsUsedAndAgainWhenItChanges) {
+  bullet_sim_test::writeBinaryStl(file("shared.stl"), boxTriangles(Vector3d(1, 1, 1)));
+  MeshCache cache;
+  const auto first = cache.load(file("shared.stl"));
+  const auto second = cache.load(file("shared.stl"));
+  EXPECT_EQ(first.get(), second.get());
+  EXPECT_EQ(cache.fileReads(), 1u);
+  // Rewritten with two boxes: a different file now.
+  auto two = boxTriangles(Vector3d(1, 1, 1));
+  const auto more = boxTriangles(Vector3d(1, 1, 1), Vector3d(3, 0, 0));
+  two.insert(two.end(), more.begin(), more.end());
+  bullet_sim_test::writeBinaryStl(file("shared.stl"), two);
+  const auto third = cache.load(file("shared.stl"));
+  EXPECT_EQ(cache.fileReads(), 2u);
+  EXPECT_EQ(third->triangleCount(), 24u);
+  EXPECT_EQ(first->triangleCount(), 12u);  // its users keep the old one
+}
+
+TEST_F(MeshFiles, CorruptStlNamesTheFileAndAssimpsReason) {
+  bullet_sim_test::writeText(file("corrupt.stl"), "this is not a mesh\n");
+  const std::string error = loadErrorOf(file("corrupt.stl"));
+  EXPECT_EQ(error.rfind(file("corrupt.stl") + ": cannot read mesh: ", 0), 0u) << error;
+  EXPECT_NE(error.find("STL"), std::string::npos) << error;  // assimp's own words
+}
+
+TEST_F(MeshFiles, EmptyAndMissingFilesAreNamed) {
+  bullet_sim_test::writeText(file("empty.stl"), "");
+  EXPECT_EQ(loadErrorOf(file("empty.stl")),
+            file("empty.stl") + ": cannot read mesh: File is empty");
+  const std::string missing = loadErrorOf(file("missing.dae"));
+  EXPECT_EQ(missing.rfind(file("missing.dae") + ": cannot read mesh: ", 0), 0u) << missing;
+}
+
+TEST_F(MeshFiles, ColladaWithoutTrianglesIsAnError) {
+  bullet_sim_test::writeCollada(file("nothing.dae"), {}, 1.0, "Z_UP",
+                                Eigen::Vector4f(1, 1, 1, 1));
+  EXPECT_EQ(loadErrorOf(file("nothing.dae")), file("nothing.dae") + ": mesh has no triangles");
+}
