@@ -7,6 +7,7 @@
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
 #include "gazebo_extensions.h"
+#include "robot_parser.h"
 
 namespace bullet_sim {
 namespace {
@@ -35,7 +36,9 @@ Pose3 toPose(const urdf::Pose& p) {
   return out;
 }
 
-void addVisuals(const urdf::Link& link, RobotSpec* spec) {
+}  // namespace
+
+void addLinkVisuals(const urdf::Link& link, RobotSpec* spec) {
   for (const urdf::VisualSharedPtr& v : link.visual_array) {
     if (!v || !v->geometry) continue;
     VisualSpec vis;
@@ -75,8 +78,6 @@ void addVisuals(const urdf::Link& link, RobotSpec* spec) {
   }
 }
 
-}  // namespace
-
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name) {
   return parseRobot(urdf_xml, source_name, UriResolver(ResourcePaths::fromEnvironment()));
 }
@@ -101,7 +102,7 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
                               "' has <collision> but no <inertial>: it is given no mass "
                               "(Gazebo would drop it)");
     }
-    addVisuals(*link, &spec);
+    addLinkVisuals(*link, &spec);
   }
   parseGazeboExtensions(urdf_xml, source_name, &spec);
   for (const auto& surface : spec.surfaces) {
