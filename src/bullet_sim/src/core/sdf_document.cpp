@@ -1,5 +1,6 @@
 #include "sdf_document.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "bullet_sim/errors.h"
@@ -24,12 +25,28 @@ std::unique_ptr<tinyxml2::XMLDocument> parseSdfXml(const std::string& text,
 
 std::unique_ptr<sdf::Root> loadSdfRoot(const std::string& text, const std::string& source,
                                        const std::string& path, const UriResolver& resolver,
-                                       const std::string& kind) {
+                                       const std::string& kind,
+                                       std::vector<std::string>* warnings) {
   IncludeResolver includes(resolver, path.empty() ? "" : fs::path(path).parent_path().string());
   auto root = std::make_unique<sdf::Root>();
   // Loading by path lets libsdformat record each element's file (for relative mesh URIs).
-  const sdf::Errors errors = path.empty() ? root->LoadSdfString(text, includes.parserConfig())
-                                          : root->Load(path, includes.parserConfig());
+  sdf::Errors errors = path.empty() ? root->LoadSdfString(text, includes.parserConfig())
+                                    : root->Load(path, includes.parserConfig());
+  // Worlds saved by Gazebo give static links mass 0 and nan moments; Gazebo loads them, and
+  // a static link's inertia is never used. Movable links are checked where they are built.
+  const auto inertia = std::stable_partition(errors.begin(), errors.end(), [](const sdf::Error& e) {
+    return e.Code() != sdf::ErrorCode::LINK_INERTIA_INVALID;
+  });
+  for (auto e = inertia; e != errors.end(); ++e) {
+    warnings->push_back(source + ": " + e->Message() + " (ignored for a static model)");
+  }
+  const bool had_inertia_errors = inertia != errors.end();
+  errors.erase(inertia, errors.end());
+  // libsdformat then adds "Failed to load a world." (the world is loaded all the same).
+  const bool only_follow_ups = std::all_of(errors.begin(), errors.end(), [](const sdf::Error& e) {
+    return e.Message().rfind("Failed to load a ", 0) == 0;
+  });
+  if (had_inertia_errors && only_follow_ups) errors.clear();
   if (!includes.failures().empty()) {
     std::string message;
     for (const std::string& f : includes.failures()) message += (message.empty() ? "" : "; ") + f;
@@ -42,10 +59,13 @@ std::unique_ptr<sdf::Root> loadSdfRoot(const std::string& text, const std::strin
 RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name,
                               const UriResolver& resolver) {
   parseSdfXml(sdf_xml, source_name, "model");
-  const auto root = loadSdfRoot(sdf_xml, source_name, "", resolver, "model");
+  std::vector<std::string> warnings;
+  const auto root = loadSdfRoot(sdf_xml, source_name, "", resolver, "model", &warnings);
   const sdf::Model* model = root->Model();
   if (!model) throw LoadError(source_name + ": no <model> element (an SDF model is expected)");
-  return parseSdfModel(*model, source_name, resolver);
+  RobotSpec spec = parseSdfModel(*model, source_name, resolver);
+  spec.warnings.insert(spec.warnings.begin(), warnings.begin(), warnings.end());
+  return spec;
 }
 
 }  // namespace bullet_sim

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <sdf/sdf.hh>
 #include <tinyxml2.h>
@@ -22,11 +23,14 @@ std::unique_ptr<tinyxml2::XMLDocument> parseSdfXml(const std::string& text,
 /// SDF text (read from `path`, or "" for text from elsewhere) loaded by libsdformat; its
 /// <include>s are resolved through `resolver` (built-in sun and ground_plane), relative
 /// URIs from the folder of `path`.
+/// libsdformat's complaint about invalid link inertia goes to `warnings` (static links in
+/// worlds saved by Gazebo have nan moments; movable links are checked when converted).
 /// @throws LoadError naming `source`: an include that cannot be resolved (with the URI and
 /// the folders searched, or what is wrong with its model.config), libsdformat's errors.
 std::unique_ptr<sdf::Root> loadSdfRoot(const std::string& text, const std::string& source,
                                        const std::string& path, const UriResolver& resolver,
-                                       const std::string& kind);
+                                       const std::string& kind,
+                                       std::vector<std::string>* warnings);
 
 }  // namespace bullet_sim
 

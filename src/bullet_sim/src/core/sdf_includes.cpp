@@ -94,22 +94,19 @@ std::string IncludeResolver::find(const std::string& uri) {
 }
 
 std::string IncludeResolver::findModelUri(const std::string& uri) {
+  // model://NAME names a model folder, which may sit deeper (model://set/part) as Gazebo
+  // allows; model://NAME/file.sdf names a file in one.
   const std::string rest = uri.substr(8);
-  const std::string name = rest.substr(0, rest.find('/'));
   std::vector<std::string> searched;
-  std::string dir = resolver_.findModel(name, &searched);
-  if (dir.empty() && isBuiltin(name)) dir = (fs::path(builtinModelsDir()) / name).string();
+  std::string dir = resolver_.findModel(rest, &searched);
+  if (dir.empty() && isBuiltin(rest)) dir = (fs::path(builtinModelsDir()) / rest).string();
   if (dir.empty()) {
-    failures_.push_back("<include> <uri>" + uri + "</uri>: model '" + name +
+    const std::string file = resolver_.resolve(uri, "");
+    if (!file.empty()) return file;
+    failures_.push_back("<include> <uri>" + uri + "</uri>: model '" + rest +
                         "' not found in the model folders (GAZEBO_MODEL_PATH): " +
                         join(searched) + "; built in are only sun and ground_plane");
     return "";
-  }
-  if (rest.size() > name.size()) {
-    // A file inside a model folder (model://NAME/file.sdf).
-    const std::string path = resolver_.resolve(uri, "", &searched);
-    if (path.empty()) failures_.push_back("<include> <uri>" + uri + "</uri>: no such file");
-    return path;
   }
   std::string problem;
   const std::string file = modelSdfFile(dir, &problem);

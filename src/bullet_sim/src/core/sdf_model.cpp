@@ -1,8 +1,12 @@
 #include "sdf_model.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include <urdf_model/model.h>
 
@@ -242,6 +246,7 @@ class SdfModelConverter {
     out->inertial->ixz = in.MassMatrix().Ixz();
     out->inertial->iyz = in.MassMatrix().Iyz();
     const std::string where = where_ + " link '" + entry.name + "'";
+    checkInertia(*out->inertial, where);
     for (uint64_t i = 0; i < l.CollisionCount(); ++i) {
       const sdf::Collision& c = *l.CollisionByIndex(i);
       auto col = std::make_shared<urdf::Collision>();
@@ -273,6 +278,21 @@ class SdfModelConverter {
                                "' is not simulated (sensors of SDF models are not)");
     }
     return out;
+  }
+
+  /// libsdformat only warns about these (static links may have them); a moving link
+  /// cannot be simulated with them.
+  static void checkInertia(const urdf::Inertial& in, const std::string& where) {
+    const double moments[] = {in.ixx, in.iyy, in.izz, in.ixy, in.ixz, in.iyz};
+    const bool finite = std::all_of(std::begin(moments), std::end(moments),
+                                    [](double m) { return std::isfinite(m); });
+    if (in.mass > 0 && std::isfinite(in.mass) && finite && in.ixx > 0 && in.iyy > 0 && in.izz > 0) {
+      return;
+    }
+    std::ostringstream values;
+    values << "mass " << in.mass << ", ixx iyy izz " << in.ixx << " " << in.iyy << " " << in.izz;
+    throw LoadError(where + " <inertial>: " + values.str() +
+                    ": a movable link needs a positive mass and positive, finite moments");
   }
 
   urdf::GeometrySharedPtr geometry(const sdf::Geometry& g, const std::string& where) const {

@@ -29,7 +29,7 @@ class WorldReader {
     WorldSpec spec;
     const WorldState state = readWorldState(
         sdf_element ? sdf_element->FirstChildElement("world") : nullptr, source_, &spec.warnings);
-    const auto root = loadSdfRoot(text, source_, path, resolver_, "world");
+    const auto root = loadSdfRoot(text, source_, path, resolver_, "world", &spec.warnings);
     if (root->WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
     const sdf::World& world = *root->WorldByIndex(0);
     spec.name = world.Name();

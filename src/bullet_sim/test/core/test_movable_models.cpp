@@ -244,6 +244,32 @@ TEST(MovableModels, PlaneOnAMovableModelNamesModelLinkAndType) {
                    "not supported for a movable model (box, cylinder, sphere, mesh are)");
 }
 
+TEST(MovableModels, MassZeroOnAMovableLinkNamesModelLinkAndValues) {
+  const std::string path = fixture("world_movable_bad_inertia.world");
+  EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path, kNoPaths); }),
+            path + ": model 'cart' link 'body' <inertial>: mass 0, ixx iyy izz 0.1 0.1 0.1: a "
+                   "movable link needs a positive mass and positive, finite moments");
+}
+
+TEST(MovableModels, SavedStatePlacesMovableModels) {
+  // box_a: saved model pose. box_b: its link sits 0.3 m above the model origin; the saved
+  // link pose places it (and the model frame 0.3 m below).
+  const WorldSpec spec = loadWorldString(
+      world("<model name='box_a'><pose>0 0 1 0 0 0</pose>" +
+            boxLink("link", "0 0 0 0 0 0", 0.2, 1) + "</model>"
+            "<model name='box_b'>" + boxLink("link", "0 0 0.3 0 0 0", 0.2, 1) + "</model>"
+            "<state world_name='w'><model name='box_a'><pose>3 0 0.1 0 0 0.5</pose></model>"
+            "<model name='box_b'><pose>1 1 0 0 0 0</pose>"
+            "<link name='link'><pose>5 5 0.1 0 0 0</pose></link></model></state>"),
+      "w", kNoPaths);
+  Simulation sim(spec, SimConfig());
+  const Pose3 a = sim.modelPose("box_a");
+  EXPECT_TRUE(a.position.isApprox(Eigen::Vector3d(3, 0, 0.1), 1e-9));
+  EXPECT_NEAR(Eigen::AngleAxisd(a.orientation).angle(), 0.5, 1e-9);
+  EXPECT_TRUE(sim.modelPose("box_b").position.isApprox(Eigen::Vector3d(5, 5, -0.2), 1e-9));
+  EXPECT_TRUE(linkPose(sim, "box_b", "link").translation().isApprox(Eigen::Vector3d(5, 5, 0.1), 1e-9));
+}
+
 TEST(SdfModel, DocumentWithoutModelIsRejected) {
   EXPECT_EQ(loadErrorOf([] {
               parseSdfModelString("<sdf version='1.6'><world name='w'/></sdf>", "spawn_sdf_model",

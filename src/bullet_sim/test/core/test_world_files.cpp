@@ -160,6 +160,28 @@ TEST(WorldIncludes, AModelFolderOnThePathWinsOverTheBuiltInGroundPlane) {
   EXPECT_EQ(world.shapes[0].kind, StaticShape::Box);
 }
 
+TEST(WorldIncludes, ModelFoldersInsideAFolderOfModels) {
+  // model://set/part, as TurtleBot3's autorace worlds include their parts.
+  TempDir dir;
+  writeModel(dir, "set/part", "<sdf version=\"1.6\">model.sdf</sdf>");
+  dir.write("models/set/part/model.sdf", boxModelSdf("1.6", "part", 0.3, "Gazebo/Green"));
+  const WorldSpec world = loadWorldString(
+      "<sdf version='1.6'><world name='w'><include><uri>model://set/part</uri>"
+      "<static>true</static></include></world></sdf>",
+      "w", UriResolver(ResourcePaths{{dir.sub("models")}, {}}));
+  ASSERT_NE(shapeOf(world, "part"), nullptr);
+  EXPECT_TRUE(shapeOf(world, "part")->rgba.isApprox(Eigen::Vector4f(0, 1, 0, 1)));
+}
+
+TEST(WorldIncludes, StaticLinkWithNanInertiaLoadsWithAWarning) {
+  const std::string path = fixture("world_static_nan_inertia.world");
+  const WorldSpec world = loadWorldFile(path, kNoPaths);
+  ASSERT_NE(shapeOf(world, "walls"), nullptr);
+  ASSERT_EQ(world.warnings.size(), 1u);
+  EXPECT_EQ(world.warnings[0], path + ": A link named wall_1 has invalid inertia. (ignored for "
+                                      "a static model)");
+}
+
 TEST(WorldIncludes, MissingModelNamesUriAndFoldersSearched) {
   TempDir dir;
   const std::string path = fixture("world_missing_include.world");
