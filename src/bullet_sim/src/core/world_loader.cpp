@@ -51,6 +51,11 @@ class WorldReader {
       const auto saved = state.models.find(model.Name());
       readTopModel(model, saved == state.models.end() ? nullptr : &saved->second, &spec);
     }
+    for (const auto& saved : state.models) {
+      if (world.ModelNameExists(saved.first)) continue;
+      spec.warnings.push_back(source_ + ": <state> <model name=\"" + saved.first +
+                              "\">: the world has no such model: its state is ignored");
+    }
     return spec;
   }
 

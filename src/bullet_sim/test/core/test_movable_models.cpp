@@ -11,8 +11,10 @@
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 #include "bullet_sim/world_spec.h"
+#include "temp_dir.h"
 
 using namespace bullet_sim;
+using bullet_sim_test::TempDir;
 
 namespace {
 
@@ -268,6 +270,27 @@ TEST(MovableModels, SavedStatePlacesMovableModels) {
   EXPECT_NEAR(Eigen::AngleAxisd(a.orientation).angle(), 0.5, 1e-9);
   EXPECT_TRUE(sim.modelPose("box_b").position.isApprox(Eigen::Vector3d(5, 5, -0.2), 1e-9));
   EXPECT_TRUE(linkPose(sim, "box_b", "link").translation().isApprox(Eigen::Vector3d(5, 5, 0.1), 1e-9));
+}
+
+TEST(SdfModel, IncludedModelJoinsByItsScopedLinkName) {
+  // An SDF 1.6 trolley that includes a model folder and fixes its link by the `::` name.
+  TempDir dir;
+  dir.write("models/basket/model.config",
+            "<model><name>basket</name><sdf version='1.6'>model.sdf</sdf></model>");
+  dir.write("models/basket/model.sdf", "<sdf version='1.6'><model name='basket'>" +
+                                           boxLink("link", "0 0 0 0 0 0", 0.3, 2) +
+                                           "</model></sdf>");
+  const RobotSpec spec = parseSdfModelString(
+      "<sdf version='1.6'><model name='trolley'>" + boxLink("frame", "0 0 0.2 0 0 0", 0.4, 5) +
+          "<include><uri>model://basket</uri><pose>0 0 0.55 0 0 0</pose></include>"
+          "<joint name='mount' type='fixed'><parent>frame</parent><child>basket::link</child>"
+          "</joint></model></sdf>",
+      "trolley.sdf", UriResolver(ResourcePaths{{dir.sub("models")}, {}}));
+  const urdf::LinkConstSharedPtr basket = spec.urdf->getLink("basket::link");
+  ASSERT_TRUE(basket);
+  EXPECT_EQ(basket->parent_joint->parent_link_name, "frame");
+  EXPECT_NEAR(basket->parent_joint->parent_to_joint_origin_transform.position.z, 0.35, 1e-12);
+  EXPECT_TRUE(spec.warnings.empty()) << spec.warnings.front();
 }
 
 TEST(SdfModel, DocumentWithoutModelIsRejected) {

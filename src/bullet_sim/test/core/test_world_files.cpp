@@ -95,6 +95,18 @@ TEST(WorldState, LidarSeesTheWallsWhereTheStatePutsThem) {
   EXPECT_TRUE(std::isinf(rangeAt(scan, M_PI / 2))) << rangeAt(scan, M_PI / 2);
 }
 
+TEST(WorldState, StateOfAModelTheWorldLacksIsAWarning) {
+  const WorldSpec world = loadWorldString(
+      "<sdf version='1.6'><world name='w'><include><uri>model://ground_plane</uri></include>"
+      "<state world_name='w'><model name='ghost'><pose>1 0 0 0 0 0</pose></model></state>"
+      "</world></sdf>",
+      "w.world", kNoPaths);
+  ASSERT_EQ(world.warnings.size(), 1u);
+  EXPECT_EQ(world.warnings[0],
+            "w.world: <state> <model name=\"ghost\">: the world has no such model: its state "
+            "is ignored");
+}
+
 TEST(WorldState, NonNumericSavedPoseNamesModelLinkAndValue) {
   const std::string path = fixture("world_state_bad_pose.world");
   const std::string error = loadErrorOf([&] { loadWorldFile(path, kNoPaths); });
