@@ -107,6 +107,8 @@ RobotSpec parseRobotFile(const std::string& path);
 /// @throws LoadError naming the source, element and value.
 RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name,
                               const UriResolver& resolver);
+/// As above, with the resource paths of the environment (GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH).
+RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name);
 
 }  // namespace bullet_sim
 

@@ -68,4 +68,8 @@ RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& sou
   return spec;
 }
 
+RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name) {
+  return parseSdfModelString(sdf_xml, source_name, UriResolver(ResourcePaths::fromEnvironment()));
+}
+
 }  // namespace bullet_sim
