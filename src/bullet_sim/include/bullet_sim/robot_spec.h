@@ -85,6 +85,10 @@ struct RobotSpec {
   std::vector<VisualSpec> visuals;
   /// The collision meshes, by <mesh filename> as written in the URDF.
   std::map<std::string, std::shared_ptr<const TriangleMesh>> collision_meshes;
+  /// Where the URDF root link sits in the model frame: identity for URDF robots; for an
+  /// SDF model the pose of its root link (the canonical link) in the <model> frame. Spawn
+  /// and model poses are poses of the model frame, as in Gazebo.
+  Pose3 root_link_in_model;
   /// Unsupported plugins/sensors, links with collision but no inertial, ...
   std::vector<std::string> warnings;
 };
@@ -112,6 +116,18 @@ void loadRobotMeshes(const UriResolver& resolver, const std::string& base_dir,
 /// mesh names resolve from the file's folder).
 /// @throws LoadError when the file cannot be read or parsed.
 RobotSpec parseRobotFile(const std::string& path);
+
+/// Converts an SDF document holding one <model> into a RobotSpec, as a movable model of a
+/// world is simulated (Gazebo's spawn_sdf_model): its links with inertial, collision and
+/// visual geometry (material scripts give Gazebo's colours), its revolute, continuous,
+/// prismatic and fixed joints, nested models with `::`-scoped link names; the tree is
+/// rooted at the canonical link. <include>s are resolved through `resolver`.
+/// Sensors and plugins of the model are not simulated (a warning each).
+/// @throws LoadError naming the source, element and value.
+RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name,
+                              const UriResolver& resolver);
+/// As above, with the resource paths of the environment (GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH).
+RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name);
 
 }  // namespace bullet_sim
 

@@ -34,11 +34,14 @@ struct DueSensor {
 /// Every robot-taking method throws std::out_of_range for an unknown robot.
 class Simulation {
  public:
+  /// Spawns the world's movable models (WorldSpec::models) as robots of their names.
+  /// @throws LoadError as spawnRobot does.
   Simulation(const WorldSpec& world, const SimConfig& cfg);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
+  /// `pose`: the model frame in the world (the root link goes to pose * spec.root_link_in_model).
   /// @throws LoadError on a name clash, a diff drive naming a missing joint, ...
   void spawnRobot(const std::string& name, const RobotSpec& spec, const Pose3& pose);
   bool deleteRobot(const std::string& name);
@@ -53,7 +56,7 @@ class Simulation {
   void reset();
 
   void setCmdVel(const std::string& robot, double linear_mps, double angular_radps);
-  Pose3 modelPose(const std::string& robot) const;  ///< root link in the world
+  Pose3 modelPose(const std::string& robot) const;  ///< model frame in the world
   Twist3 modelTwist(const std::string& robot) const;
   void setModelState(const std::string& robot, const Pose3& pose, const Twist3& twist);
 

@@ -7,6 +7,7 @@
 
 #include "bullet_sim/mesh.h"
 #include "bullet_sim/resource_paths.h"
+#include "bullet_sim/robot_spec.h"
 #include "bullet_sim/types.h"
 
 namespace bullet_sim {
@@ -26,10 +27,20 @@ struct StaticShape {
   bool collides = true;              ///< false for visual-only geometry
 };
 
-/// A world read from SDF.
+/// A movable (non-static) model of the world: simulated as a robot of the same name,
+/// with its links, inertials and joints.
+struct WorldModel {
+  std::string name;
+  RobotSpec spec;
+  Pose3 pose;  ///< the model frame in the world (its <state> pose when the world has one)
+};
+
+/// A world read from SDF. Static models become shapes, movable ones `models`; the poses
+/// of a saved <state> are applied, as Gazebo does when it loads a saved world.
 struct WorldSpec {
   std::string name;
   std::vector<StaticShape> shapes;
+  std::vector<WorldModel> models;
   Eigen::Vector3d gravity{0, 0, -9.8};
   double max_step_size_s = 0.001;
   Eigen::Vector3d light_direction{-0.5, 0.1, -0.9};
@@ -38,8 +49,10 @@ struct WorldSpec {
 };
 
 /// Loads an SDF world file with libsdformat; URIs in it (includes, meshes) are looked
-/// up through `resolver`, relative ones from the file's folder.
-/// @throws LoadError naming the path.
+/// up through `resolver`, relative ones from the file's folder. `<include>`d models come
+/// from the resolver's model folders (model.config picks the SDF file); `sun` and
+/// `ground_plane` are built in when no folder provides them.
+/// @throws LoadError naming the path (and for a missing model, the URI and folders searched).
 WorldSpec loadWorldFile(const std::string& path, const UriResolver& resolver);
 /// As above, with the resource paths of the environment (GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH).
 WorldSpec loadWorldFile(const std::string& path);

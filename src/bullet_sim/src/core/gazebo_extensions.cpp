@@ -1,12 +1,14 @@
 #include "gazebo_extensions.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <tinyxml2.h>
 
 #include "bullet_sim/errors.h"
+#include "gazebo_materials.h"
 #include "xml_values.h"
 
 namespace bullet_sim {
@@ -27,6 +29,7 @@ class ExtensionReader {
   void readBlock(const XMLElement* gazebo) {
     const std::string link = attr(gazebo, "reference");
     if (!link.empty()) readSurface(gazebo, link);
+    if (!link.empty()) readMaterial(gazebo, link);
     for (const XMLElement* s = gazebo->FirstChildElement("sensor"); s;
          s = s->NextSiblingElement("sensor")) {
       readSensor(s, link);
@@ -65,6 +68,22 @@ class ExtensionReader {
     s.kd = xml_.number(g, "kd", s.kd, where);
     if (s.mu1 < 0 || s.mu2 < 0) xml_.fail(where, "friction mu1/mu2 must not be negative");
     spec_->surfaces[link] = s;
+  }
+
+  /// <gazebo reference="link"><material>Gazebo/Red</material>: Gazebo draws every visual
+  /// of the link in that material, whatever the URDF <material> says.
+  void readMaterial(const XMLElement* g, const std::string& link) {
+    if (!g->FirstChildElement("material")) return;
+    const std::string name = xml_.text(g, "material", "");
+    std::optional<Eigen::Vector4f> colour = gazeboMaterialColour(name);
+    if (!colour) {
+      spec_->warnings.push_back("<gazebo reference=\"" + link + "\"> <material>: '" + name +
+                                "' is not one of Gazebo's stock materials: drawn grey");
+      colour = unknownMaterialColour();
+    }
+    for (VisualSpec& v : spec_->visuals) {
+      if (v.link == link) v.rgba = *colour;
+    }
   }
 
   void readSensor(const XMLElement* s, const std::string& link) {

@@ -8,7 +8,8 @@
 namespace bullet_sim {
 
 /// Reads the <gazebo> extension tags of a URDF document (surfaces, sensors,
-/// plugins) into `spec`; unsupported sensors and plugins become warnings.
+/// plugins, material scripts) into `spec`; unsupported sensors and plugins become
+/// warnings. A link's <material> recolours its visuals: spec->visuals must be filled.
 /// @throws LoadError on malformed values.
 void parseGazeboExtensions(const std::string& urdf_xml, const std::string& source,
                            RobotSpec* spec);

@@ -8,6 +8,7 @@
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
 #include "gazebo_extensions.h"
+#include "robot_parser.h"
 
 namespace bullet_sim {
 namespace {
@@ -36,7 +37,9 @@ Pose3 toPose(const urdf::Pose& p) {
   return out;
 }
 
-void addVisuals(const urdf::Link& link, RobotSpec* spec) {
+}  // namespace
+
+void addLinkVisuals(const urdf::Link& link, RobotSpec* spec) {
   for (const urdf::VisualSharedPtr& v : link.visual_array) {
     if (!v || !v->geometry) continue;
     VisualSpec vis;
@@ -77,6 +80,8 @@ void addVisuals(const urdf::Link& link, RobotSpec* spec) {
   }
 }
 
+namespace {
+
 /// The folder relative mesh names start from: the robot file's, else the current one.
 std::string baseDirOf(const std::string& source_name) {
   std::error_code ec;
@@ -110,7 +115,7 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
                               "' has <collision> but no <inertial>: it is given no mass "
                               "(Gazebo would drop it)");
     }
-    addVisuals(*link, &spec);
+    addLinkVisuals(*link, &spec);
   }
   loadRobotMeshes(resolver, baseDirOf(source_name), source_name, &spec);
   parseGazeboExtensions(urdf_xml, source_name, &spec);

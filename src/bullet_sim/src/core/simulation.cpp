@@ -86,6 +86,8 @@ Simulation::Simulation(const WorldSpec& world, const SimConfig& cfg)
     throw std::invalid_argument("physics_step_s must be > 0, got " +
                                 std::to_string(cfg.physics_step_s));
   }
+  // Gazebo simulates a world's movable models as it does spawned robots.
+  for (const WorldModel& model : world.models) spawnRobot(model.name, model.spec, model.pose);
 }
 
 Simulation::~Simulation() = default;
@@ -95,7 +97,7 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
   if (!spec.urdf) throw LoadError("robot '" + name + "': the spec holds no parsed URDF");
   auto r = std::make_unique<Impl::Robot>();
   r->spec = spec;
-  r->T_world_spawn = toIsometry(pose);
+  r->T_world_spawn = toIsometry(pose) * toIsometry(spec.root_link_in_model);
   RobotPlan plan = planRobot(spec);
   r->spec.warnings.insert(r->spec.warnings.end(), plan.warnings.begin(), plan.warnings.end());
   r->id = impl_->next_robot_id;
@@ -183,7 +185,8 @@ void Simulation::setCmdVel(const std::string& robot, double linear_mps, double a
 
 Pose3 Simulation::modelPose(const std::string& robot) const {
   const Impl::Robot& r = impl_->robot(robot);
-  return toPose3(r.physics->linkPose(r.physics->plan().bodies[0].root_link));
+  return toPose3(r.physics->linkPose(r.physics->plan().bodies[0].root_link) *
+                 toIsometry(r.spec.root_link_in_model).inverse());
 }
 
 Twist3 Simulation::modelTwist(const std::string& robot) const {
@@ -193,7 +196,7 @@ Twist3 Simulation::modelTwist(const std::string& robot) const {
 
 void Simulation::setModelState(const std::string& robot, const Pose3& pose, const Twist3& twist) {
   Impl::Robot& r = impl_->robot(robot);
-  r.physics->moveRoot(toIsometry(pose), twist);
+  r.physics->moveRoot(toIsometry(pose) * toIsometry(r.spec.root_link_in_model), twist);
   for (ImuSensor& imu : r.imus) imu.reset();
 }
 

@@ -2,58 +2,38 @@
 #include <fstream>
 #include <sstream>
 
-#include <sdf/sdf.hh>
-#include <tinyxml2.h>
-
 #include "bullet_sim/errors.h"
 #include "bullet_sim/mesh.h"
 #include "bullet_sim/world_spec.h"
+#include "robot_plan.h"
+#include "sdf_document.h"
+#include "sdf_model.h"
+#include "sdf_util.h"
+#include "world_state.h"
 
 namespace bullet_sim {
 namespace {
 
-using ignition::math::Pose3d;
+using Eigen::Isometry3d;
 
-Pose3 toPose(const Pose3d& p) {
-  Pose3 out;
-  out.position = Eigen::Vector3d(p.Pos().X(), p.Pos().Y(), p.Pos().Z());
-  out.orientation = Eigen::Quaterniond(p.Rot().W(), p.Rot().X(), p.Rot().Y(), p.Rot().Z());
-  return out;
-}
+Isometry3d toIso(const ignition::math::Pose3d& p) { return toIsometry(toPose(p)); }
 
-/// Pose of an element in its parent's frame (relative_to honoured when it resolves).
-template <typename T>
-Pose3d poseInParent(const T& element) {
-  Pose3d pose;
-  if (!element.SemanticPose().Resolve(pose).empty()) pose = element.RawPose();
-  return pose;
-}
-
-std::string geometryName(sdf::GeometryType type) {
-  switch (type) {
-    case sdf::GeometryType::EMPTY: return "empty";
-    case sdf::GeometryType::BOX: return "box";
-    case sdf::GeometryType::CYLINDER: return "cylinder";
-    case sdf::GeometryType::PLANE: return "plane";
-    case sdf::GeometryType::SPHERE: return "sphere";
-    case sdf::GeometryType::MESH: return "mesh";
-    case sdf::GeometryType::HEIGHTMAP: return "heightmap";
-    case sdf::GeometryType::CAPSULE: return "capsule";
-    case sdf::GeometryType::ELLIPSOID: return "ellipsoid";
-    default: return "polyline";
-  }
-}
-
-/// Builds the StaticShapes of one world and records where they came from.
+/// Builds the shapes and movable models of one world and records where they came from.
 class WorldReader {
  public:
   WorldReader(std::string source, const UriResolver& resolver)
       : source_(std::move(source)), resolver_(resolver) {}
 
-  WorldSpec read(const sdf::Root& root) {
-    if (root.WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
-    const sdf::World& world = *root.WorldByIndex(0);
+  /// Reads the <state> first: its poses are checked with messages that name the value.
+  WorldSpec read(const std::string& text, const std::string& path) {
+    const auto xml = parseSdfXml(text, source_, "world");
+    const tinyxml2::XMLElement* sdf_element = xml->FirstChildElement("sdf");
     WorldSpec spec;
+    const WorldState state = readWorldState(
+        sdf_element ? sdf_element->FirstChildElement("world") : nullptr, source_, &spec.warnings);
+    const auto root = loadSdfRoot(text, source_, path, resolver_, "world", &spec.warnings);
+    if (root->WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
+    const sdf::World& world = *root->WorldByIndex(0);
     spec.name = world.Name();
     const auto g = world.Gravity();
     spec.gravity = Eigen::Vector3d(g.X(), g.Y(), g.Z());
@@ -67,50 +47,104 @@ class WorldReader {
       const auto a = scene->Ambient();
       spec.ambient = Eigen::Vector4f(a.R(), a.G(), a.B(), a.A());
     }
-    for (uint64_t i = 0; i < world.LightCount(); ++i) {
-      const sdf::Light& light = *world.LightByIndex(i);
-      if (light.Type() == sdf::LightType::DIRECTIONAL) {
-        const auto d = toPose(poseInParent(light)).orientation *
-                       Eigen::Vector3d(light.Direction().X(), light.Direction().Y(),
-                                       light.Direction().Z());
-        spec.light_direction = d.normalized();
-        break;
-      }
-    }
+    readLight(world, &spec);
     for (uint64_t i = 0; i < world.ModelCount(); ++i) {
-      readModel(*world.ModelByIndex(i), Pose3d::Zero, &spec);
+      const sdf::Model& model = *world.ModelByIndex(i);
+      const auto saved = state.models.find(model.Name());
+      readTopModel(model, saved == state.models.end() ? nullptr : &saved->second, &spec);
+    }
+    for (const auto& saved : state.models) {
+      if (world.ModelNameExists(saved.first)) continue;
+      spec.warnings.push_back(source_ + ": <state> <model name=\"" + saved.first +
+                              "\">: the world has no such model: its state is ignored");
     }
     spec.warnings.insert(spec.warnings.end(), mesh_warnings_.begin(), mesh_warnings_.end());
     return spec;
   }
 
  private:
-  void readModel(const sdf::Model& model, const Pose3d& parent_in_world, WorldSpec* spec) {
-    const Pose3d model_in_world = poseInParent(model) + parent_in_world;
-    if (!model.Static()) {
-      spec->warnings.push_back(source_ + ": model '" + model.Name() +
-                               "' is not static: it is simulated as a static model");
+  void readLight(const sdf::World& world, WorldSpec* spec) const {
+    for (uint64_t i = 0; i < world.LightCount(); ++i) {
+      const sdf::Light& light = *world.LightByIndex(i);
+      if (light.Type() == sdf::LightType::DIRECTIONAL) {
+        const auto d = toPose(poseInParent(light)).orientation *
+                       Eigen::Vector3d(light.Direction().X(), light.Direction().Y(),
+                                       light.Direction().Z());
+        spec->light_direction = d.normalized();
+        return;
+      }
     }
+  }
+
+  void readTopModel(const sdf::Model& model, const ModelState* saved, WorldSpec* spec) {
+    const Isometry3d T_world_model =
+        saved && saved->pose ? toIsometry(*saved->pose) : toIso(poseInParent(model));
+    std::string anchor;
+    bool anchor_fixed = true;
+    const bool anchored = isAnchoredToWorld(model, &anchor, &anchor_fixed);
+    if (anchored && !anchor_fixed) {
+      spec->warnings.push_back(source_ + ": model '" + model.Name() + "': joint '" + anchor +
+                               "' to the world is not fixed: the model is held static");
+    }
+    if (model.Static() || anchored) {
+      readStaticModel(model, model.Name(), T_world_model, saved, spec);
+      return;
+    }
+    WorldModel movable;
+    movable.name = model.Name();
+    movable.spec = parseSdfModel(model, source_, resolver_);
+    movable.pose = toPose3(T_world_model);
+    // A saved pose of the root link places the model (its joints are not set from <state>).
+    if (saved) {
+      const std::string& root = movable.spec.urdf->getRoot()->name;
+      const auto link = saved->link_poses.find(root);
+      if (link != saved->link_poses.end()) {
+        movable.pose = toPose3(toIsometry(link->second) *
+                               toIsometry(movable.spec.root_link_in_model).inverse());
+      }
+    }
+    spec->warnings.insert(spec->warnings.end(), movable.spec.warnings.begin(),
+                          movable.spec.warnings.end());
+    spec->models.push_back(std::move(movable));
+  }
+
+  /// A static model and its nested models, with the link poses of a saved state.
+  void readStaticModel(const sdf::Model& model, const std::string& name,
+                       const Isometry3d& T_world_model, const ModelState* saved,
+                       WorldSpec* spec) {
     for (uint64_t l = 0; l < model.LinkCount(); ++l) {
       const sdf::Link& link = *model.LinkByIndex(l);
-      const Pose3d link_in_world = poseInParent(link) + model_in_world;
-      for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
-        const sdf::Collision& col = *link.CollisionByIndex(c);
-        spec->shapes.push_back(
-            shape(model, link, *col.Geom(), poseInParent(col) + link_in_world, true));
+      Isometry3d T_world_link = T_world_model * toIso(poseInParent(link));
+      if (saved && saved->link_poses.count(link.Name())) {
+        T_world_link = toIsometry(saved->link_poses.at(link.Name()));
       }
-      for (uint64_t v = 0; v < link.VisualCount(); ++v) {
-        const sdf::Visual& vis = *link.VisualByIndex(v);
-        StaticShape s = shape(model, link, *vis.Geom(), poseInParent(vis) + link_in_world, false);
-        if (vis.Material()) {
-          const auto c = vis.Material()->Diffuse();
-          s.rgba = Eigen::Vector4f(c.R(), c.G(), c.B(), c.A());
-        }
-        mergeVisual(s, spec);
-      }
+      readLink(name, link, T_world_link, spec);
     }
     for (uint64_t m = 0; m < model.ModelCount(); ++m) {
-      readModel(*model.ModelByIndex(m), model_in_world, spec);
+      const sdf::Model& nested = *model.ModelByIndex(m);
+      const ModelState* nested_saved = nullptr;
+      if (saved && saved->models.count(nested.Name())) nested_saved = &saved->models.at(nested.Name());
+      const Isometry3d T_world_nested = nested_saved && nested_saved->pose
+                                            ? toIsometry(*nested_saved->pose)
+                                            : T_world_model * toIso(poseInParent(nested));
+      readStaticModel(nested, name + "::" + nested.Name(), T_world_nested, nested_saved, spec);
+    }
+  }
+
+  void readLink(const std::string& model, const sdf::Link& link, const Isometry3d& T_world_link,
+                WorldSpec* spec) {
+    for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
+      const sdf::Collision& col = *link.CollisionByIndex(c);
+      spec->shapes.push_back(shape(model, link, *col.Geom(),
+                                   T_world_link * toIso(poseInParent(col)), true));
+    }
+    for (uint64_t v = 0; v < link.VisualCount(); ++v) {
+      const sdf::Visual& vis = *link.VisualByIndex(v);
+      StaticShape s = shape(model, link, *vis.Geom(), T_world_link * toIso(poseInParent(vis)), false);
+      s.rgba = visualColour(vis, source_ + ": model '" + model + "' link '" + link.Name() +
+                                     "' visual '" + vis.Name() + "'",
+                            &spec->warnings);
+      mergeVisual(s, spec);
     }
   }
 
@@ -129,12 +163,12 @@ class WorldReader {
     spec->shapes.push_back(visual);
   }
 
-  StaticShape shape(const sdf::Model& model, const sdf::Link& link, const sdf::Geometry& geom,
-                    const Pose3d& pose, bool collides) const {
+  StaticShape shape(const std::string& model, const sdf::Link& link, const sdf::Geometry& geom,
+                    const Isometry3d& pose, bool collides) const {
     StaticShape s;
-    s.model = model.Name();
+    s.model = model;
     s.link = link.Name();
-    s.pose = toPose(pose);
+    s.pose = toPose3(pose);
     s.collides = collides;
     switch (geom.Type()) {
       case sdf::GeometryType::BOX: {
@@ -163,7 +197,7 @@ class WorldReader {
         meshShape(model, link, *geom.MeshShape(), collides, &s);
         break;
       default:
-        throw LoadError(source_ + ": model '" + model.Name() + "' link '" + link.Name() + "' " +
+        throw LoadError(source_ + ": model '" + model + "' link '" + link.Name() + "' " +
                         (collides ? "collision" : "visual") + ": geometry type '" +
                         geometryName(geom.Type()) +
                         "' is not supported (box, cylinder, sphere, plane, mesh are)");
@@ -173,9 +207,9 @@ class WorldReader {
 
   /// A mesh: its file resolved from the folder of the SDF file that names it. A collision
   /// mesh that cannot be read is an error, a visual one a warning (not drawn).
-  void meshShape(const sdf::Model& model, const sdf::Link& link, const sdf::Mesh& mesh,
+  void meshShape(const std::string& model, const sdf::Link& link, const sdf::Mesh& mesh,
                  bool collides, StaticShape* s) const {
-    const std::string where = source_ + ": model '" + model.Name() + "' link '" + link.Name() +
+    const std::string where = source_ + ": model '" + model + "' link '" + link.Name() +
                               "' " + (collides ? "collision" : "visual") + " mesh '" +
                               mesh.Uri() + "'";
     const auto scale = mesh.Scale();
@@ -206,21 +240,6 @@ class WorldReader {
   mutable std::vector<std::string> mesh_warnings_;  ///< moved into the spec by read()
 };
 
-std::string describe(const sdf::Errors& errors) {
-  std::ostringstream out;
-  for (size_t i = 0; i < errors.size(); ++i) out << (i ? "; " : "") << errors[i].Message();
-  return out.str();
-}
-
-/// sdformat reports malformed XML only as "Unable to read file"; tinyxml2
-/// (the parser it uses) says what and where.
-void checkXml(const std::string& xml, const std::string& source) {
-  tinyxml2::XMLDocument doc;
-  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
-    throw LoadError(source + ": invalid SDF world: malformed XML: " + doc.ErrorStr());
-  }
-}
-
 }  // namespace
 
 WorldSpec loadWorldFile(const std::string& path) {
@@ -236,20 +255,12 @@ WorldSpec loadWorldFile(const std::string& path, const UriResolver& resolver) {
   if (!in.good()) throw LoadError(path + ": world file does not exist or cannot be read");
   std::stringstream text;
   text << in.rdbuf();
-  checkXml(text.str(), path);
-  sdf::Root root;
-  const sdf::Errors errors = root.Load(path);
-  if (!errors.empty()) throw LoadError(path + ": invalid SDF world: " + describe(errors));
-  return WorldReader(path, resolver).read(root);
+  return WorldReader(path, resolver).read(text.str(), path);
 }
 
 WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name,
                           const UriResolver& resolver) {
-  checkXml(sdf_xml, source_name);
-  sdf::Root root;
-  const sdf::Errors errors = root.LoadSdfString(sdf_xml);
-  if (!errors.empty()) throw LoadError(source_name + ": invalid SDF world: " + describe(errors));
-  return WorldReader(source_name, resolver).read(root);
+  return WorldReader(source_name, resolver).read(sdf_xml, "");
 }
 
 }  // namespace bullet_sim
