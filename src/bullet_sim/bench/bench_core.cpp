@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
       auto t = Clock::now();
       physics_s += std::chrono::duration<double>(t - before_step).count();
       for (const bullet_sim::DueSensor& due : due_now) {
+        if (due.robot != "robot") continue;  // the world's movable models have no sensors
         const int kind = static_cast<int>(due.kind);
         ++reads[kind];
         switch (due.kind) {
@@ -85,7 +86,7 @@ int main(int argc, char** argv) {
             checksum += sim.linkPoses(due.robot).size();
             break;
           case bullet_sim::SensorKind::JointStates:
-            checksum += sim.readJointStates(due.robot).positions[0];
+            checksum += sim.readJointStates(due.robot).positions.at(0);
             break;
           case bullet_sim::SensorKind::Camera:
             break;
