@@ -212,12 +212,20 @@ bool LinkJointServices::clearWrenches(gazebo_msgs::BodyRequest::Request& req,
 
 bool LinkJointServices::clearEfforts(gazebo_msgs::JointRequest::Request& req,
                                      gazebo_msgs::JointRequest::Response&) {
-  const std::optional<bullet_sim::EntityName> joint = runner_.sim().findJoint(req.joint_name);
+  bullet_sim::Simulation& sim = runner_.sim();
+  const std::optional<bullet_sim::EntityName> joint = sim.findJoint(req.joint_name);
   if (!joint) {
     ROS_ERROR("ClearJointForces: %s", unknownJoint(req.joint_name).c_str());
     return false;
   }
-  runner_.sim().externalForces().clearEfforts(joint->model, joint->link);
+  if (joint->link != req.joint_name) {  // scoped: that model's joint only
+    sim.externalForces().clearEfforts(joint->model, joint->link);
+    return true;
+  }
+  // A bare name: that joint in every model, as Gazebo clears by joint name.
+  for (const std::string& model : sim.robotNames()) {
+    sim.externalForces().clearEfforts(model, req.joint_name);
+  }
   return true;
 }
 
