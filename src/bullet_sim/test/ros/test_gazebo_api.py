@@ -4,7 +4,6 @@ gazebo_msgs clients as scripts written for Gazebo use them. The simulation is pa
 stepped; expected values are worked out by hand from the poses, masses and inertias set
 here."""
 import math
-import time
 import unittest
 
 import rospy
@@ -280,8 +279,11 @@ class GazeboApi(unittest.TestCase):
         expected = self.ok("get_model_state", ROBOT, "").pose
         self.assertAlmostEqual(last.pose[index].position.x, expected.position.x, delta=1e-9)
         self.assertIn(ROBOT + "::base_footprint", links.last().name)
-        time.sleep(0.5)  # paused: any further message would be one too many
-        self.assertEqual(models.count(), 100)
+        # One more period gives one more message; messages arrive in order, so once it is
+        # here any surplus from the first second would be here too.
+        self.ok("step_simulation", 10)
+        wait_for(lambda: models.count() >= 101, "the message at 1.01 s")
+        self.assertEqual(models.count(), 101)
 
 
 if __name__ == "__main__":
