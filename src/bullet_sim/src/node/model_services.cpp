@@ -92,6 +92,9 @@ std::string ModelServices::spawnModel(const gazebo_msgs::SpawnModel::Request& re
                   req.robot_namespace);
   } catch (const bullet_sim::LoadError& error) {
     return error.what();
+  } catch (const ros::InvalidNameException& error) {
+    return "model " + inQuotes(req.model_name) + " in robot_namespace " +
+           inQuotes(req.robot_namespace) + ": " + error.what();
   }
   return "";
 }

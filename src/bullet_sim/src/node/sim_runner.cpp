@@ -26,14 +26,22 @@ SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
 
 void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
                       const bullet_sim::Pose3& pose, const std::string& robot_namespace) {
-  sim_.spawnRobot(name, spec, pose);
+  // The namespace first: an invalid one throws before the simulation holds the robot.
   const ros::NodeHandle robot_nh(nh_, robot_namespace);
-  const std::string tf_prefix = findTfPrefix(robot_nh);
-  robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh, tf_prefix);
-  cameras_.addRobot(name, robot_nh, tf_prefix);
-  if (!tf_prefix.empty()) {
-    ROS_INFO("model %s: topics in %s, frames under tf_prefix '%s'", name.c_str(),
-             robot_nh.getNamespace().c_str(), tf_prefix.c_str());
+  sim_.spawnRobot(name, spec, pose);
+  try {
+    const std::string tf_prefix = findTfPrefix(robot_nh);
+    robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh, tf_prefix);
+    cameras_.addRobot(name, robot_nh, tf_prefix);
+    if (!tf_prefix.empty()) {
+      ROS_INFO("model %s: topics in %s, frames under tf_prefix '%s'", name.c_str(),
+               robot_nh.getNamespace().c_str(), tf_prefix.c_str());
+    }
+  } catch (const ros::InvalidNameException&) {  // a topic name of the robot's Gazebo tags
+    robots_.erase(name);
+    cameras_.removeRobot(name);
+    sim_.deleteRobot(name);
+    throw;
   }
   spawn_poses_[name] = pose;
 }

@@ -26,7 +26,8 @@ class SimRunner {
 
   /// Adds a robot to the simulation and advertises its topics under `robot_namespace`;
   /// its frames get the tf_prefix found from that namespace.
-  /// Throws bullet_sim::LoadError as Simulation::spawnRobot does.
+  /// Throws bullet_sim::LoadError as Simulation::spawnRobot does, ros::InvalidNameException
+  /// for an invalid namespace or topic name; either way nothing is added.
   void spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
              const bullet_sim::Pose3& pose, const std::string& robot_namespace);
   bool remove(const std::string& name);

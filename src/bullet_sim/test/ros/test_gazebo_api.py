@@ -112,6 +112,14 @@ class GazeboApi(unittest.TestCase):
                    yaw_pose(0, 0, NAN), "")
         self.fails("spawn_sdf_model", "SDF models are not yet supported", "d", SDF_BOX, "",
                    Pose(), "")
+        self.fails("spawn_urdf_model", "robot_namespace 'tb3-1'", "d", BOX_URDF, "tb3-1",
+                   Pose(), "")
+        bad_topic = ROTOR_URDF.replace("</robot>", """<gazebo><plugin name="drive"
+            filename="libgazebo_ros_diff_drive.so"><leftJoint>spin</leftJoint>
+            <rightJoint>spin</rightJoint><commandTopic>cmd vel</commandTopic></plugin>
+            </gazebo></robot>""")
+        self.fails("spawn_urdf_model", "cmd vel", "d", bad_topic, "", Pose(), "")
+        self.fails("get_model_state", "'d'", "d", "")
         self.ok("spawn_sdf_model", "rotor", ROTOR_URDF, "", yaw_pose(0, 5, 1), "")
 
     def test_delete_model(self):
