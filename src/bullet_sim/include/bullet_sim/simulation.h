@@ -79,7 +79,8 @@ class Simulation {
   /// World state of an entity found by findEntity (a model: its root link).
   EntityState entityState(const EntityName& entity) const;
   /// World state of a reference frame named as the services take it: "" and "world"
-  /// are the world frame (identity, at rest), else an entity; std::nullopt if unknown.
+  /// are the world frame (identity, at rest), else an entity, else "map" and "/map" are
+  /// the world as in gazebo_ros; std::nullopt if unknown.
   std::optional<EntityState> frameState(const std::string& name) const;
   /// Every URDF link of a robot, sorted by name; the root link is the model's frame.
   std::vector<std::string> linkNames(const std::string& robot) const;

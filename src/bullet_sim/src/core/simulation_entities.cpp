@@ -57,9 +57,10 @@ EntityState Simulation::entityState(const EntityName& entity) const {
 
 std::optional<EntityState> Simulation::frameState(const std::string& name) const {
   if (isWorldFrameName(name)) return EntityState{};
-  const std::optional<EntityName> entity = findEntity(name);
-  if (!entity) return std::nullopt;
-  return entityState(*entity);
+  if (const std::optional<EntityName> entity = findEntity(name)) return entityState(*entity);
+  // gazebo_ros reads these as the world too (it has no map frame), after the entities.
+  if (name == "map" || name == "/map") return EntityState{};
+  return std::nullopt;
 }
 
 std::vector<std::string> Simulation::linkNames(const std::string& robot) const {

@@ -132,6 +132,7 @@ TEST_F(FreeSpace, EntitiesAndJointsAreFoundByGazeboNames) {
   EXPECT_NEAR(sim.frameState("world")->pose.position.norm(), 0, 0);
   EXPECT_NEAR((sim.frameState("rotor")->pose.position - Eigen::Vector3d(3, 0, 5)).norm(), 0, 1e-9);
   EXPECT_FALSE(sim.frameState("ghost"));
+  EXPECT_NEAR(sim.frameState("map")->pose.position.norm(), 0, 0);
   EXPECT_EQ(sim.findJoint("spin")->model, "rotor");
   EXPECT_EQ(sim.findJoint("rotor::spin")->link, "spin");
   EXPECT_FALSE(sim.findJoint("box::spin"));
