@@ -94,7 +94,7 @@ def main():
         world = os.path.join(ROOT, "src/turtlebot3_gazebo/worlds/roundTrack.world")
         procs.append(subprocess.Popen(
             ["rosrun", "bullet_sim", "bullet_sim_node", "_world_file:=" + world,
-             "_real_time_factor:=0", "_spawn_yaw:=1.5675"], env=env,
+             "_real_time_factor:=0", "_robot_name:=turtlebot3_burger", "_spawn_yaw:=1.5675"], env=env,
             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL))
         rospy.init_node("camera_cost_bench", anonymous=True, disable_signals=True)
         # Drive a slow circle in the lane: a robot at rest sleeps and costs nothing.

@@ -40,7 +40,7 @@ rosparam list > /dev/null || { echo "roscore did not start on port $PORT"; exit 
 rosrun xacro xacro turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro > "$WORK/burger.urdf"
 rosparam set robot_description -t "$WORK/burger.urdf"
 rosrun bullet_sim bullet_sim_node _world_file:="$WORLD" _real_time_factor:=0 \
-  _spawn_yaw:=1.5675 _paused:=true > "$WORK/node.log" 2>&1 &
+  _robot_name:=turtlebot3_burger _spawn_yaw:=1.5675 _paused:=true > "$WORK/node.log" 2>&1 &
 node_pid=$!
 pids+=("$node_pid")
 

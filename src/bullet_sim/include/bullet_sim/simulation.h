@@ -3,10 +3,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bullet_sim/entity_frames.h"
+#include "bullet_sim/external_forces.h"
 #include "bullet_sim/robot_spec.h"
 #include "bullet_sim/sensor_data.h"
 #include "bullet_sim/types.h"
@@ -52,7 +56,8 @@ class Simulation {
   /// period elapsed at this step. Nothing is computed for them here.
   std::vector<DueSensor> step();
   double timeS() const;
-  /// Sim time to 0, robots back to their spawn poses at rest, commands zero.
+  /// Sim time to 0, robots back to their spawn poses at rest, commands zero, external
+  /// wrenches and efforts cleared.
   void reset();
 
   void setCmdVel(const std::string& robot, double linear_mps, double angular_radps);
@@ -67,6 +72,49 @@ class Simulation {
   JointStateData readJointStates(const std::string& robot) const;  ///< every non-fixed joint
   std::vector<LinkPose> linkPoses(const std::string& robot) const;
   const WorldSpec& world() const;
+
+  // Models, links and joints by Gazebo's names ("model", "model::link"). Link and joint
+  // taking methods throw std::out_of_range naming an unknown link or joint.
+
+  /// "model" or "model::link" of an existing robot and link; std::nullopt otherwise
+  /// (also for "" and "world", which are the world frame, not entities).
+  std::optional<EntityName> findEntity(const std::string& name) const;
+  /// World state of an entity found by findEntity (a model: its root link).
+  EntityState entityState(const EntityName& entity) const;
+  /// World state of a reference frame named as the services take it: "" and "world"
+  /// are the world frame (identity, at rest), else an entity, else "map" and "/map" are
+  /// the world as in gazebo_ros; std::nullopt if unknown.
+  std::optional<EntityState> frameState(const std::string& name) const;
+  /// Every URDF link of a robot, sorted by name; the root link is the model's frame.
+  std::vector<std::string> linkNames(const std::string& robot) const;
+  std::string rootLink(const std::string& robot) const;
+  EntityState linkState(const std::string& robot, const std::string& link) const;
+  /// Moves the robot rigidly, keeping its joint angles, so that `link` lands on `pose`
+  /// with `twist` (the velocity of the link's origin; the rest of the robot turns with it).
+  void setLinkState(const std::string& robot, const std::string& link, const Pose3& pose,
+                    const Twist3& twist);
+
+  /// A movable joint named "model::joint", or by its bare name (the first model in name
+  /// order that has it, as Gazebo searches); `link` of the result holds the joint name.
+  std::optional<EntityName> findJoint(const std::string& name) const;
+  /// The robot's movable joints (revolute and continuous), sorted by name.
+  std::vector<std::string> jointNames(const std::string& robot) const;
+  double jointPosition(const std::string& robot, const std::string& joint) const;
+  double jointVelocity(const std::string& robot, const std::string& joint) const;
+  /// Puts the named joints at the given angles (rad), the others where they are, the root
+  /// link where it is, every body of the robot at rest.
+  void setJointPositions(const std::string& robot, const std::map<std::string, double>& positions);
+
+  /// apply_body_wrench / apply_joint_effort bookkeeping, applied at every step.
+  ExternalForces& externalForces();
+
+  // Physics settings, changeable while running.
+  double physicsStepS() const;
+  /// The next steps are `step_s` long; sim time runs on from where it is.
+  /// @throws std::invalid_argument unless 0 < step_s.
+  void setPhysicsStep(double step_s);
+  Eigen::Vector3d gravity() const;
+  void setGravity(const Eigen::Vector3d& gravity_mps2);
 
  private:
   struct Impl;

@@ -172,11 +172,62 @@ int PhysicsRobot::jointIndex(const std::string& name) const {
   return -1;
 }
 
+btVector3 PhysicsRobot::jointAxisInWorld(size_t joint) const {
+  const btHingeConstraint& h = *hinges_[joint];
+  return h.getRigidBodyA().getWorldTransform().getBasis() * h.getAFrame().getBasis().getColumn(2);
+}
+
 double PhysicsRobot::jointVelocity(size_t joint) const {
   const btHingeConstraint& h = *hinges_[joint];
-  const btVector3 axis =
-      h.getRigidBodyA().getWorldTransform().getBasis() * h.getAFrame().getBasis().getColumn(2);
-  return (h.getRigidBodyB().getAngularVelocity() - h.getRigidBodyA().getAngularVelocity()).dot(axis);
+  return (h.getRigidBodyB().getAngularVelocity() - h.getRigidBodyA().getAngularVelocity())
+      .dot(jointAxisInWorld(joint));
+}
+
+void PhysicsRobot::setJointPositions(const std::vector<double>& angles_rad) {
+  // Bodies are planned depth first, so a body's parent body has a smaller index.
+  std::vector<const JointPlan*> joint_of_body(bodies_.size(), nullptr);
+  std::vector<double> angle_of_body(bodies_.size(), 0.0);
+  for (size_t i = 0; i < plan_.joints.size(); ++i) {
+    joint_of_body[plan_.joints[i].child_body] = &plan_.joints[i];
+    angle_of_body[plan_.joints[i].child_body] = angles_rad.at(i);
+  }
+  std::vector<Eigen::Isometry3d> T_world_root(bodies_.size());
+  T_world_root[0] = linkPose(plan_.bodies[0].root_link);
+  for (size_t b = 1; b < bodies_.size(); ++b) {
+    const JointPlan& j = *joint_of_body[b];
+    T_world_root[b] = T_world_root[j.parent_body] * j.T_parentroot_joint *
+                      Eigen::AngleAxisd(angle_of_body[b], j.axis);
+  }
+  for (size_t b = 0; b < bodies_.size(); ++b) {
+    btRigidBody& rb = *bodies_[b].rigid;
+    rb.setWorldTransform(toBt(T_world_root[b] * plan_.bodies[b].T_root_com));
+    rb.setInterpolationWorldTransform(rb.getWorldTransform());
+    rb.setLinearVelocity(btVector3(0, 0, 0));
+    rb.setAngularVelocity(btVector3(0, 0, 0));
+    rb.clearForces();
+    rb.activate(true);
+  }
+  for (size_t i = 0; i < hinges_.size(); ++i) {
+    joint_angles_[i] = angles_rad[i];
+    last_raw_angles_[i] = hinges_[i]->getHingeAngle();
+    motors_[i].reference_rad = angles_rad[i];
+  }
+}
+
+void PhysicsRobot::applyLinkWrench(const std::string& link, const Wrench& wrench) {
+  btRigidBody& rb = *bodies_[plan_.body_of_link.at(link)].rigid;
+  rb.activate(true);
+  rb.applyCentralForce(toBt(wrench.force_n));
+  rb.applyTorque(toBt(wrench.torque_nm));
+}
+
+void PhysicsRobot::applyJointEffort(size_t joint, double effort_nm) {
+  btHingeConstraint& h = *hinges_[joint];
+  const btVector3 torque = jointAxisInWorld(joint) * effort_nm;
+  h.getRigidBodyA().activate(true);
+  h.getRigidBodyB().activate(true);
+  h.getRigidBodyB().applyTorque(torque);
+  h.getRigidBodyA().applyTorque(-torque);
 }
 
 void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max_torque_nm) {

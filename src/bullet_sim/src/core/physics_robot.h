@@ -7,6 +7,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "bullet_sim/entity_frames.h"
 #include "bullet_sim/types.h"
 #include "robot_plan.h"
 
@@ -46,6 +47,15 @@ class PhysicsRobot {
   /// follows a reference angle that advances at that velocity, so a wheel told
   /// to stand still holds its angle instead of creeping under load.
   void setJointMotor(size_t joint, double velocity_radps, double max_torque_nm);
+  /// Puts every hinge at angles_rad (one per plan().joints entry), keeping the root
+  /// link's pose; every body ends at rest.
+  void setJointPositions(const std::vector<double>& angles_rad);
+  /// Adds a wrench (world axes) at the centre of mass of the body holding `link`, for the
+  /// coming step.
+  void applyLinkWrench(const std::string& link, const Wrench& wrench);
+  /// Adds a torque about a hinge's axis (child turned positively, parent the other way),
+  /// for the coming step.
+  void applyJointEffort(size_t joint, double effort_nm);
   /// Wakes every body of the robot (a sleeping robot is not simulated).
   void wake();
   /// Sets every motor's velocity target for the coming physics step of dt_s.
@@ -65,6 +75,7 @@ class PhysicsRobot {
   /// Puts every body where the zero-joint configuration at T_world_model puts it.
   void placeBodies(const Eigen::Isometry3d& T_world_model);
   Eigen::Isometry3d T_world_body(size_t body) const;
+  btVector3 jointAxisInWorld(size_t joint) const;
 
   btDiscreteDynamicsWorld* world_;
   RobotPlan plan_;

@@ -2,60 +2,14 @@
 
 #include <cmath>
 #include <map>
-#include <optional>
-#include <random>
 #include <stdexcept>
 
 #include "bullet_sim/errors.h"
-#include "diff_drive.h"
-#include "imu_sensor.h"
-#include "physics_robot.h"
-#include "physics_world.h"
 #include "ray_sensor.h"
 #include "robot_plan.h"
-#include "sensor_schedule.h"
+#include "simulation_impl.h"
 
 namespace bullet_sim {
-
-struct Simulation::Impl {
-  struct Robot {
-    int id;  ///< spawn order; rebuilding in this order replays a run exactly
-    RobotSpec spec;
-    Eigen::Isometry3d T_world_spawn;
-    std::unique_ptr<PhysicsRobot> physics;
-    std::optional<DiffDriveController> drive;
-    std::vector<std::mt19937_64> ray_rngs, imu_rngs;
-    std::vector<ImuSensor> imus;
-    SensorSchedule schedule;
-  };
-
-  Impl(const WorldSpec& w, const SimConfig& c)
-      : world(w), cfg(c), physics(std::make_unique<PhysicsWorld>(w)) {}
-
-  Robot& robot(const std::string& name) {
-    auto it = robots.find(name);
-    if (it == robots.end()) throw std::out_of_range("no robot named '" + name + "'");
-    return *it->second;
-  }
-  const Robot& robot(const std::string& name) const {
-    return const_cast<Impl*>(this)->robot(name);
-  }
-
-  void seedSensors(const std::string& name, Robot* r) const {
-    r->ray_rngs.clear();
-    r->imu_rngs.clear();
-    for (const RaySpec& s : r->spec.rays) r->ray_rngs.push_back(sensorRng(cfg.seed, name, s.name));
-    for (const ImuSpec& s : r->spec.imus) r->imu_rngs.push_back(sensorRng(cfg.seed, name, s.name));
-    for (ImuSensor& imu : r->imus) imu.reset();
-  }
-
-  WorldSpec world;
-  SimConfig cfg;
-  std::unique_ptr<PhysicsWorld> physics;
-  std::map<std::string, std::unique_ptr<Robot>> robots;
-  uint64_t steps = 0;
-  int next_robot_id = 0;
-};
 
 namespace {
 
@@ -123,7 +77,10 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
   impl_->robots[name] = std::move(r);
 }
 
-bool Simulation::deleteRobot(const std::string& name) { return impl_->robots.erase(name) > 0; }
+bool Simulation::deleteRobot(const std::string& name) {
+  impl_->forces.clearRobot(name);
+  return impl_->robots.erase(name) > 0;
+}
 
 std::vector<std::string> Simulation::robotNames() const {
   std::vector<std::string> names;
@@ -142,10 +99,11 @@ std::vector<DueSensor> Simulation::step() {
   for (auto& entry : impl_->robots) {
     Impl::Robot& r = *entry.second;
     if (r.drive && r.schedule.driveDue(k, dt)) {
-      r.drive->updateMotors(r.physics.get(), (k - 1) * dt, dt);
+      r.drive->updateMotors(r.physics.get(), impl_->timeAtStep(k - 1), dt);
     }
     r.physics->applyMotors(dt);
   }
+  impl_->applyExternalForces();
   impl_->physics->step(dt);
   impl_->steps = k;
   for (auto& entry : impl_->robots) {
@@ -157,7 +115,7 @@ std::vector<DueSensor> Simulation::step() {
   return due;
 }
 
-double Simulation::timeS() const { return impl_->steps * impl_->cfg.physics_step_s; }
+double Simulation::timeS() const { return impl_->timeAtStep(impl_->steps); }
 
 void Simulation::reset() {
   // Bullet keeps contact, pair and broadphase state that moving bodies back
@@ -176,6 +134,9 @@ void Simulation::reset() {
     impl_->seedSensors(entry.second.first, &r);
   }
   impl_->steps = 0;
+  impl_->epoch_s = 0;
+  // Their start times were sim times of the run that is undone.
+  impl_->forces.clear();
 }
 
 void Simulation::setCmdVel(const std::string& robot, double linear_mps, double angular_radps) {
@@ -191,7 +152,13 @@ Pose3 Simulation::modelPose(const std::string& robot) const {
 
 Twist3 Simulation::modelTwist(const std::string& robot) const {
   const Impl::Robot& r = impl_->robot(robot);
-  return r.physics->linkTwist(r.physics->plan().bodies[0].root_link);
+  const std::string& root = r.physics->plan().bodies[0].root_link;
+  Twist3 twist = r.physics->linkTwist(root);
+  // The model frame's origin moves as a point of the root link's body.
+  const Eigen::Vector3d root_to_model =
+      modelPose(robot).position - r.physics->linkPose(root).translation();
+  twist.linear += twist.angular.cross(root_to_model);
+  return twist;
 }
 
 void Simulation::setModelState(const std::string& robot, const Pose3& pose, const Twist3& twist) {

@@ -1,5 +1,7 @@
 #include "camera_io.h"
 
+#include "tf_prefix.h"
+
 #include <bullet_sim/errors.h>
 
 #include <ros/console.h>
@@ -56,12 +58,14 @@ CameraIo::CameraIo(const bullet_sim::Simulation& sim) : sim_(sim), renderer_(sim
   logNewRendererWarnings();
 }
 
-void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_nh) {
+void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_nh,
+                        const std::string& tf_prefix) {
   ros::NodeHandle nh(robot_nh);
   std::vector<Topics>& topics = cameras_[robot];
   topics.clear();
   for (const bullet_sim::CameraSpec& camera : sim_.robotSpec(robot).cameras) {
     topics.emplace_back();
+    topics.back().frame_id = resolveFrame(tf_prefix, camera.frame_id);
     try {
       bullet_sim::validateCamera(camera);
     } catch (const bullet_sim::LoadError& error) {
@@ -85,12 +89,18 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
   const bool info_wanted = topics.info && topics.info.getNumSubscribers() > 0;
   if (!image_wanted && !info_wanted) return;
   const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
-  if (info_wanted) topics.info.publish(toMsg(bullet_sim::cameraInfo(camera, sim_.timeS())));
+  if (info_wanted) {
+    sensor_msgs::CameraInfoPtr info = toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()));
+    info->header.frame_id = topics.frame_id;
+    topics.info.publish(info);
+  }
   if (!image_wanted) return;
   try {
     bullet_sim::ImageData frame;
     renderer_.render(due.robot, due.index, &frame);
-    topics.image.publish(toMsg(&frame));
+    sensor_msgs::ImagePtr image = toMsg(&frame);
+    image->header.frame_id = topics.frame_id;
+    topics.image.publish(image);
   } catch (const std::exception& error) {
     ROS_ERROR_THROTTLE(5.0, "robot %s: camera '%s' not rendered: %s", due.robot.c_str(),
                        camera.name.c_str(), error.what());

@@ -26,9 +26,11 @@ class CameraIo {
   CameraIo(const CameraIo&) = delete;
   CameraIo& operator=(const CameraIo&) = delete;
 
-  /// Advertises the topics of a spawned robot's cameras, resolved in `robot_nh`. A camera
-  /// the renderer cannot draw (bad size, fov or format) is reported and left out.
-  void addRobot(const std::string& robot, const ros::NodeHandle& robot_nh);
+  /// Advertises the topics of a spawned robot's cameras, resolved in `robot_nh`; their
+  /// frame ids go under `tf_prefix`. A camera the renderer cannot draw (bad size, fov or
+  /// format) is reported and left out.
+  void addRobot(const std::string& robot, const ros::NodeHandle& robot_nh,
+                const std::string& tf_prefix);
   void removeRobot(const std::string& robot);
 
   /// Publishes a due camera (due.kind == SensorKind::Camera) if it is watched.
@@ -37,6 +39,7 @@ class CameraIo {
  private:
   struct Topics {
     ros::Publisher image, info;
+    std::string frame_id;
   };
 
   void logNewRendererWarnings();

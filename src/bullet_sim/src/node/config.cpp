@@ -20,10 +20,14 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   if (!private_nh.getParam("world_file", config.world_file) || config.world_file.empty())
     throw ConfigError("parameter " + private_nh.resolveName("world_file") +
                       " is not set: give the SDF world to load");
-  if (!nh.getParam("robot_description", config.robot_description) ||
-      config.robot_description.empty())
+  private_nh.param("robot_name", config.robot_name, config.robot_name);
+  if (!config.robot_name.empty() &&
+      (!nh.getParam("robot_description", config.robot_description) ||
+       config.robot_description.empty()))
     throw ConfigError("parameter " + nh.resolveName("robot_description") +
-                      " is not set: load the robot's URDF there (e.g. with xacro)");
+                      " is not set: load the URDF of robot '" + config.robot_name +
+                      "' there (e.g. with xacro), or leave " +
+                      private_nh.resolveName("robot_name") + " unset to start without a robot");
   private_nh.param("physics_step", config.physics_step_s, config.physics_step_s);
   private_nh.param("real_time_factor", config.real_time_factor, config.real_time_factor);
   private_nh.param("paused", config.start_paused, config.start_paused);
@@ -31,8 +35,8 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   private_nh.param("spawn_x", config.spawn_x_m, config.spawn_x_m);
   private_nh.param("spawn_y", config.spawn_y_m, config.spawn_y_m);
   private_nh.param("spawn_yaw", config.spawn_yaw_rad, config.spawn_yaw_rad);
-  private_nh.param("robot_name", config.robot_name, config.robot_name);
   private_nh.param("status_period", config.status_period_s, config.status_period_s);
+  private_nh.param("model_states_rate", config.model_states_rate_hz, config.model_states_rate_hz);
 
   require(std::isfinite(config.physics_step_s) && config.physics_step_s >= 0 &&
               config.physics_step_s <= 0.1,
@@ -46,6 +50,8 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
           "must be finite");
   require(std::isfinite(config.status_period_s) && config.status_period_s > 0,
           "~status_period", config.status_period_s, "must be > 0 s");
+  require(std::isfinite(config.model_states_rate_hz) && config.model_states_rate_hz > 0,
+          "~model_states_rate", config.model_states_rate_hz, "must be > 0 Hz");
   return config;
 }
 

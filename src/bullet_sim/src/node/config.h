@@ -20,12 +20,16 @@ struct Config {
   bool start_paused = false;         ///< ~paused
   int seed = 1;                      ///< ~seed of every sensor noise source
   double spawn_x_m = 0, spawn_y_m = 0, spawn_yaw_rad = 0;  ///< ~spawn_x, ~spawn_y, ~spawn_yaw
-  std::string robot_name;            ///< ~robot_name: "" = the URDF's robot name
+  /// ~robot_name: when set, robot_description is spawned at start under this name;
+  /// when empty the world starts without robots (they come through the spawn services).
+  std::string robot_name;
   double status_period_s = 1;        ///< ~status_period: wall seconds between status lines
-  std::string robot_description;     ///< the URDF, from the robot_description parameter
+  double model_states_rate_hz = 100; ///< ~model_states_rate: /gazebo/model_states, link_states
+  std::string robot_description;     ///< the URDF (robot_description), read when robot_name is set
 };
 
-/// Reads the private parameters from `private_nh` and robot_description from `nh`.
+/// Reads the private parameters from `private_nh` and, when ~robot_name is set,
+/// robot_description from `nh`.
 /// Throws ConfigError naming the parameter and its value when one is missing or out of range.
 Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 

@@ -1,5 +1,7 @@
 #include "conversions.h"
 
+#include <cmath>
+
 namespace bullet_sim_node {
 namespace {
 
@@ -118,6 +120,43 @@ geometry_msgs::TransformStamped toTransformMsg(const bullet_sim::OdometryData& o
   msg.transform.translation.z = odom.pose.position.z();
   msg.transform.rotation = toQuaternion(odom.pose.orientation);
   return msg;
+}
+
+Eigen::Vector3d fromMsg(const geometry_msgs::Vector3& vector) {
+  return Eigen::Vector3d(vector.x, vector.y, vector.z);
+}
+
+std::optional<std::string> firstNonFinite(const geometry_msgs::Vector3& vector,
+                                          const std::string& name) {
+  const std::pair<const char*, double> fields[] = {{"x", vector.x}, {"y", vector.y}, {"z", vector.z}};
+  for (const auto& field : fields) {
+    if (!std::isfinite(field.second)) {
+      return name + "." + field.first + " = " + std::to_string(field.second);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> firstNonFinite(const geometry_msgs::Pose& pose) {
+  geometry_msgs::Vector3 position;
+  position.x = pose.position.x;
+  position.y = pose.position.y;
+  position.z = pose.position.z;
+  if (auto bad = firstNonFinite(position, "position")) return bad;
+  const std::pair<const char*, double> fields[] = {
+      {"x", pose.orientation.x}, {"y", pose.orientation.y}, {"z", pose.orientation.z},
+      {"w", pose.orientation.w}};
+  for (const auto& field : fields) {
+    if (!std::isfinite(field.second)) {
+      return std::string("orientation.") + field.first + " = " + std::to_string(field.second);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> firstNonFinite(const geometry_msgs::Twist& twist) {
+  if (auto bad = firstNonFinite(twist.linear, "linear")) return bad;
+  return firstNonFinite(twist.angular, "angular");
 }
 
 }  // namespace bullet_sim_node

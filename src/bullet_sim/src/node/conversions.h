@@ -12,6 +12,9 @@
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
 
+#include <optional>
+#include <string>
+
 namespace bullet_sim_node {
 
 geometry_msgs::Pose toMsg(const bullet_sim::Pose3& pose);
@@ -19,6 +22,7 @@ geometry_msgs::Twist toMsg(const bullet_sim::Twist3& twist);
 /// Normalises the quaternion; a zero quaternion (an unset message) becomes the identity.
 bullet_sim::Pose3 fromMsg(const geometry_msgs::Pose& pose);
 bullet_sim::Twist3 fromMsg(const geometry_msgs::Twist& twist);
+Eigen::Vector3d fromMsg(const geometry_msgs::Vector3& vector);
 
 sensor_msgs::LaserScan toMsg(const bullet_sim::LaserScanData& scan);
 sensor_msgs::Imu toMsg(const bullet_sim::ImuData& imu);
@@ -26,5 +30,11 @@ nav_msgs::Odometry toMsg(const bullet_sim::OdometryData& odom);
 sensor_msgs::JointState toMsg(const bullet_sim::JointStateData& joints);
 /// The odom -> base transform carried by an odometry reading.
 geometry_msgs::TransformStamped toTransformMsg(const bullet_sim::OdometryData& odom);
+
+/// "position.x = nan"-style description of the first non-finite field, if any.
+std::optional<std::string> firstNonFinite(const geometry_msgs::Pose& pose);
+std::optional<std::string> firstNonFinite(const geometry_msgs::Twist& twist);
+std::optional<std::string> firstNonFinite(const geometry_msgs::Vector3& vector,
+                                          const std::string& name);
 
 }  // namespace bullet_sim_node

@@ -1,10 +1,13 @@
-// bullet_sim_node: runs the Bullet simulation of a world and the robot of
-// robot_description, publishing /clock, odometry, tf, joint states, scan and imu, and
-// offering Gazebo's simulation services under /gazebo.
+// bullet_sim_node: runs the Bullet simulation of a world, publishing /clock and the
+// robots' sensors and offering gazebo_ros's services and topics under /gazebo. A robot
+// is spawned from robot_description at start only when ~robot_name is set; others arrive
+// through /gazebo/spawn_urdf_model.
 #include "config.h"
+#include "link_joint_services.h"
+#include "model_services.h"
 #include "pacer.h"
+#include "physics_services.h"
 #include "sim_runner.h"
-#include "sim_services.h"
 #include "status_reporter.h"
 
 #include <bullet_sim/errors.h>
@@ -19,38 +22,40 @@ namespace {
 
 using bullet_sim_node::Config;
 
-bullet_sim::Pose3 spawnPose(const Config& config) {
+void logWarnings(const std::string& source, const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings) ROS_WARN("%s: %s", source.c_str(), warning.c_str());
+}
+
+void spawnStartRobot(const Config& config, bullet_sim_node::SimRunner* runner) {
+  const bullet_sim::RobotSpec robot =
+      bullet_sim::parseRobot(config.robot_description, "robot_description");
+  logWarnings("robot_description", robot.warnings);
   bullet_sim::Pose3 pose;
   pose.position = {config.spawn_x_m, config.spawn_y_m, 0.0};
   pose.orientation = Eigen::AngleAxisd(config.spawn_yaw_rad, Eigen::Vector3d::UnitZ());
-  return pose;
-}
-
-void logWarnings(const std::string& source, const std::vector<std::string>& warnings) {
-  for (const std::string& warning : warnings) ROS_WARN("%s: %s", source.c_str(), warning.c_str());
+  runner->spawn(config.robot_name, robot, pose, "");
 }
 
 int run(const Config& config, ros::NodeHandle& nh) {
   const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(config.world_file);
   logWarnings(config.world_file, world.warnings);
-  const bullet_sim::RobotSpec robot =
-      bullet_sim::parseRobot(config.robot_description, "robot_description");
-  logWarnings("robot_description", robot.warnings);
-
   bullet_sim::SimConfig sim_config;
   sim_config.physics_step_s =
       config.physics_step_s > 0 ? config.physics_step_s : world.max_step_size_s;
   sim_config.seed = static_cast<uint64_t>(config.seed);
   bullet_sim::Simulation sim(world, sim_config);
-  bullet_sim_node::SimRunner runner(sim, nh, config.start_paused);
-  const std::string robot_name = config.robot_name.empty() ? robot.name : config.robot_name;
-  runner.spawn(robot_name, robot, spawnPose(config), "");
-  bullet_sim_node::SimServices services(runner, ros::NodeHandle("/gazebo"));
+  const ros::NodeHandle gazebo_nh("/gazebo");
+  bullet_sim_node::SimRunner runner(sim, nh, gazebo_nh, config.start_paused,
+                                    config.model_states_rate_hz);
+  if (!config.robot_name.empty()) spawnStartRobot(config, &runner);
   bullet_sim_node::Pacer pacer(config.real_time_factor);
+  bullet_sim_node::PhysicsServices physics_services(runner, pacer, gazebo_nh);
+  bullet_sim_node::ModelServices model_services(runner, gazebo_nh);
+  bullet_sim_node::LinkJointServices link_joint_services(runner, gazebo_nh);
   bullet_sim_node::StatusReporter status(sim, config.status_period_s);
-  ROS_INFO("world %s (%s), robot %s, physics step %g s, real-time factor %g%s",
-           world.name.c_str(), config.world_file.c_str(), robot_name.c_str(),
-           sim_config.physics_step_s, config.real_time_factor,
+  const std::string robot = config.robot_name.empty() ? "no robot" : "robot " + config.robot_name;
+  ROS_INFO("world %s (%s), %s, physics step %g s, real-time factor %g%s", world.name.c_str(),
+           config.world_file.c_str(), robot.c_str(), sim_config.physics_step_s, config.real_time_factor,
            config.start_paused ? ", paused" : "");
   runner.publishClock();
 

@@ -12,6 +12,11 @@ void Pacer::restart(double sim_time_s) {
   last_sim_s_ = sim_time_s;
 }
 
+void Pacer::setRealTimeFactor(double real_time_factor, double sim_time_s) {
+  real_time_factor_ = real_time_factor;
+  restart(sim_time_s);
+}
+
 void Pacer::waitUntil(double sim_time_s) {
   if (real_time_factor_ <= 0) return;
   if (sim_time_s < last_sim_s_) restart(sim_time_s);

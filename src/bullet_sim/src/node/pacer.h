@@ -12,12 +12,15 @@ class Pacer {
  public:
   explicit Pacer(double real_time_factor);
   void restart(double sim_time_s);
+  /// Paces at a new factor from `sim_time_s` on (set_physics_properties).
+  void setRealTimeFactor(double real_time_factor, double sim_time_s);
+  double realTimeFactor() const { return real_time_factor_; }
   /// Returns when the wall clock has reached the moment that matches `sim_time_s`.
   void waitUntil(double sim_time_s);
 
  private:
   using Clock = std::chrono::steady_clock;
-  const double real_time_factor_;
+  double real_time_factor_;
   Clock::time_point anchor_wall_;
   double anchor_sim_s_ = 0;
   double last_sim_s_ = 0;

@@ -1,6 +1,7 @@
 #include "robot_io.h"
 
 #include "conversions.h"
+#include "tf_prefix.h"
 
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
@@ -35,8 +36,8 @@ std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
 }  // namespace
 
 RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
-                 const ros::NodeHandle& robot_nh)
-    : sim_(sim), robot_(robot) {
+                 const ros::NodeHandle& robot_nh, const std::string& tf_prefix)
+    : sim_(sim), robot_(robot), tf_prefix_(tf_prefix) {
   ros::NodeHandle nh(robot_nh);
   const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
   for (const bullet_sim::RaySpec& ray : spec.rays)
@@ -55,12 +56,18 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
 void RobotIo::publish(const bullet_sim::DueSensor& due) {
   switch (due.kind) {
     case bullet_sim::SensorKind::Ray:
-      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].getNumSubscribers() > 0)
-        scan_pubs_[due.index].publish(toMsg(sim_.readRay(robot_, due.index)));
+      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].getNumSubscribers() > 0) {
+        sensor_msgs::LaserScan scan = toMsg(sim_.readRay(robot_, due.index));
+        scan.header.frame_id = resolveFrame(tf_prefix_, scan.header.frame_id);
+        scan_pubs_[due.index].publish(scan);
+      }
       break;
     case bullet_sim::SensorKind::Imu:
-      if (due.index < imu_pubs_.size() && imu_pubs_[due.index].getNumSubscribers() > 0)
-        imu_pubs_[due.index].publish(toMsg(sim_.readImu(robot_, due.index)));
+      if (due.index < imu_pubs_.size() && imu_pubs_[due.index].getNumSubscribers() > 0) {
+        sensor_msgs::Imu imu = toMsg(sim_.readImu(robot_, due.index));
+        imu.header.frame_id = resolveFrame(tf_prefix_, imu.header.frame_id);
+        imu_pubs_[due.index].publish(imu);
+      }
       break;
     case bullet_sim::SensorKind::Odometry:
       publishOdometry();
@@ -77,7 +84,9 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
 void RobotIo::publishOdometry() {
   const bool odom_wanted = odom_pub_ && odom_pub_.getNumSubscribers() > 0;
   if (!odom_wanted && !publish_odom_tf_) return;
-  const bullet_sim::OdometryData odom = sim_.readOdometry(robot_);
+  bullet_sim::OdometryData odom = sim_.readOdometry(robot_);
+  odom.frame_id = resolveFrame(tf_prefix_, odom.frame_id);
+  odom.child_frame_id = resolveFrame(tf_prefix_, odom.child_frame_id);
   if (publish_odom_tf_) tf_broadcaster_.sendTransform(toTransformMsg(odom));
   if (odom_wanted) odom_pub_.publish(toMsg(odom));
 }

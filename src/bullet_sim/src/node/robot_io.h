@@ -14,11 +14,13 @@ namespace bullet_sim_node {
 
 /// Publishes a robot's sensors (scan, imu, odom + tf, joint_states) as they fall due and
 /// feeds its diff-drive commands to the simulation. Topic names come from the robot's
-/// Gazebo tags, resolved in `robot_nh` (the robot's namespace). A sensor topic nobody
+/// Gazebo tags, resolved in `robot_nh` (the robot's namespace); frame ids (odom, base,
+/// scan, imu) are put under `tf_prefix` as Gazebo's plugins do. A sensor topic nobody
 /// subscribes to is not read from the simulation at all; the odom tf is always sent.
 class RobotIo {
  public:
-  RobotIo(bullet_sim::Simulation& sim, const std::string& robot, const ros::NodeHandle& robot_nh);
+  RobotIo(bullet_sim::Simulation& sim, const std::string& robot, const ros::NodeHandle& robot_nh,
+          const std::string& tf_prefix);
   RobotIo(const RobotIo&) = delete;
   RobotIo& operator=(const RobotIo&) = delete;
 
@@ -31,6 +33,7 @@ class RobotIo {
 
   bullet_sim::Simulation& sim_;
   const std::string robot_;
+  const std::string tf_prefix_;
   std::vector<ros::Publisher> scan_pubs_;  ///< one per RaySpec, same index
   std::vector<ros::Publisher> imu_pubs_;   ///< one per ImuSpec, same index
   ros::Publisher odom_pub_;

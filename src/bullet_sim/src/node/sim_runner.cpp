@@ -1,5 +1,8 @@
 #include "sim_runner.h"
 
+#include "tf_prefix.h"
+
+#include <ros/console.h>
 #include <rosgraph_msgs/Clock.h>
 
 namespace bullet_sim_node {
@@ -11,17 +14,35 @@ constexpr std::chrono::milliseconds kClockWallPeriod{1};
 
 }  // namespace
 
-SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh, bool paused)
-    : sim_(sim), nh_(nh), cameras_(sim), paused_(paused) {
+SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
+                     const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz)
+    : sim_(sim),
+      nh_(nh),
+      cameras_(sim),
+      state_topics_(sim, gazebo_nh, model_states_rate_hz),
+      paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
 }
 
 void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
                       const bullet_sim::Pose3& pose, const std::string& robot_namespace) {
-  sim_.spawnRobot(name, spec, pose);
+  // The namespace first: an invalid one throws before the simulation holds the robot.
   const ros::NodeHandle robot_nh(nh_, robot_namespace);
-  robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh);
-  cameras_.addRobot(name, robot_nh);
+  sim_.spawnRobot(name, spec, pose);
+  try {
+    const std::string tf_prefix = findTfPrefix(robot_nh);
+    robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh, tf_prefix);
+    cameras_.addRobot(name, robot_nh, tf_prefix);
+    if (!tf_prefix.empty()) {
+      ROS_INFO("model %s: topics in %s, frames under tf_prefix '%s'", name.c_str(),
+               robot_nh.getNamespace().c_str(), tf_prefix.c_str());
+    }
+  } catch (const ros::InvalidNameException&) {  // a topic name of the robot's Gazebo tags
+    robots_.erase(name);
+    cameras_.removeRobot(name);
+    sim_.deleteRobot(name);
+    throw;
+  }
   spawn_poses_[name] = pose;
 }
 
@@ -50,6 +71,7 @@ void SimRunner::step() {
     const auto robot = robots_.find(sensor.robot);
     if (robot != robots_.end()) robot->second->publish(sensor);
   }
+  state_topics_.update();
 }
 
 void SimRunner::publishClock() {

@@ -3,6 +3,7 @@
 
 #include "camera_io.h"
 #include "robot_io.h"
+#include "state_topics.h"
 
 #include <bullet_sim/simulation.h>
 
@@ -15,15 +16,18 @@
 
 namespace bullet_sim_node {
 
-/// Owns the robots' ROS adapters and the /clock publisher around one Simulation.
-/// Everything runs on the node's single thread (services and subscribers are called
-/// between steps), so nothing here is locked.
+/// Owns the robots' ROS adapters, the /clock publisher and the model and link state
+/// topics (in `gazebo_nh`) around one Simulation. Everything runs on the node's single
+/// thread (services and subscribers are called between steps), so nothing here is locked.
 class SimRunner {
  public:
-  SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh, bool paused);
+  SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
+            const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz);
 
-  /// Adds a robot to the simulation and advertises its topics under `robot_namespace`.
-  /// Throws bullet_sim::LoadError as Simulation::spawnRobot does.
+  /// Adds a robot to the simulation and advertises its topics under `robot_namespace`;
+  /// its frames get the tf_prefix found from that namespace.
+  /// Throws bullet_sim::LoadError as Simulation::spawnRobot does, ros::InvalidNameException
+  /// for an invalid namespace or topic name; either way nothing is added.
   void spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
              const bullet_sim::Pose3& pose, const std::string& robot_namespace);
   bool remove(const std::string& name);
@@ -45,6 +49,7 @@ class SimRunner {
   ros::Publisher clock_pub_;
   std::map<std::string, std::unique_ptr<RobotIo>> robots_;
   CameraIo cameras_;
+  StateTopics state_topics_;
   std::map<std::string, bullet_sim::Pose3> spawn_poses_;
   std::chrono::steady_clock::time_point last_clock_wall_;
   bool paused_;

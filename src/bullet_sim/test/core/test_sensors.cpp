@@ -130,3 +130,25 @@ TEST_F(BurgerOnRoundTrack, StepReportsEachSensorAtItsRate) {
   EXPECT_EQ(count[SensorKind::Odometry], 30);
   EXPECT_EQ(count[SensorKind::JointStates], 30);
 }
+
+TEST(Lidar, SeesAnotherRobot) {
+  // A panel robot (0.1 m deep, 0.6 m wide, 0.4 m tall) stands with its centre 1 m ahead of
+  // the Burger: the lidar (0.032 m behind the Burger's centre) reads 1 - 0.05 + 0.032 m.
+  // (Another Burger's lidar housing, 3 cm tall, is only met up close: the Burger rests
+  // 1 degree nose-up on its caster, so its scan plane rises 1.6 cm per metre.)
+  const char* panel = R"(<robot name="panel"><link name="panel">
+    <inertial><origin xyz="0 0 0.2"/><mass value="5"/>
+      <inertia ixx="0.2" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.2"/></inertial>
+    <collision><origin xyz="0 0 0.2"/><geometry><box size="0.1 0.6 0.4"/></geometry></collision>
+  </link></robot>)";
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  Pose3 ahead;
+  ahead.position.x() = 1.0;
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  sim.spawnRobot("panel", parseRobot(panel, "panel.urdf"), ahead);
+  run(&sim, 300);
+  EXPECT_NEAR(sim.readRay("burger", 0).ranges[0], 1.0 - 0.05 + 0.032, 0.04);
+  sim.deleteRobot("panel");
+  run(&sim, 10);
+  EXPECT_TRUE(std::isinf(sim.readRay("burger", 0).ranges[0]));
+}

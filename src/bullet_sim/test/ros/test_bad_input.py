@@ -46,14 +46,19 @@ class BadInput(unittest.TestCase):
         self.assertFailsWith(code, output, malformed, "invalid SDF")
 
     def test_urdf_with_two_roots(self):
-        code, output = run_node("two_roots", "_world_file:=" + GOOD_WORLD,
+        code, output = run_node("two_roots", "_world_file:=" + GOOD_WORLD, "_robot_name:=two",
                                 "robot_description:=/two_roots_description")
         self.assertFailsWith(code, output, "robot_description", "Two root links")
 
     def test_missing_robot_description(self):
         code, output = run_node("no_description", "_world_file:=" + GOOD_WORLD,
-                                "robot_description:=/not_set")
-        self.assertFailsWith(code, output, "/not_set", "is not set")
+                                "_robot_name:=burger", "robot_description:=/not_set")
+        self.assertFailsWith(code, output, "/not_set", "is not set", "'burger'")
+
+    def test_invalid_model_states_rate(self):
+        code, output = run_node("bad_states_rate", "_world_file:=" + GOOD_WORLD,
+                                "_model_states_rate:=0.0")
+        self.assertFailsWith(code, output, "model_states_rate", "must be > 0 Hz")
 
     def test_missing_world_parameter(self):
         code, output = run_node("no_world")
@@ -64,14 +69,21 @@ class BadInput(unittest.TestCase):
                                 "_real_time_factor:=-2.0")
         self.assertFailsWith(code, output, "real_time_factor", "-2")
 
+    def test_starts_without_robot_description_when_no_robot_name(self):
+        self.run_until_clock_then_interrupt("no_robot", "robot_description:=/not_set")
+
     def test_sigint_ends_a_running_node_cleanly(self):
+        self.run_until_clock_then_interrupt("interrupted")
+
+    def run_until_clock_then_interrupt(self, name, *args):
         node = find_node("bullet_sim", "bullet_sim_node")[0]
-        process = subprocess.Popen([node, "__name:=interrupted", "_world_file:=" + GOOD_WORLD,
-                                    "/clock:=/interrupted_clock"],
+        clock = "/%s_clock" % name
+        process = subprocess.Popen([node, "__name:=" + name, "_world_file:=" + GOOD_WORLD,
+                                    "/clock:=" + clock] + list(args),
                                    stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         master = rosgraph.Master("/bad_input_test")
         deadline = time.monotonic() + TIMEOUT_S
-        while ["/interrupted_clock", "rosgraph_msgs/Clock"] not in master.getPublishedTopics(""):
+        while [clock, "rosgraph_msgs/Clock"] not in master.getPublishedTopics(""):
             if process.poll() is not None:
                 self.fail("the node ended early: " + process.stdout.read())
             self.assertLess(time.monotonic(), deadline, "the node did not advertise /clock")

@@ -1,5 +1,6 @@
 // The node's adapters between core data and ROS messages (no master needed).
 #include "../../src/node/conversions.h"
+#include "../../src/node/tf_prefix.h"
 
 #include <gtest/gtest.h>
 
@@ -87,6 +88,26 @@ TEST(Conversions, JointStatesKeepNamesInOrder) {
   EXPECT_EQ(msg.name, joints.names);
   EXPECT_EQ(msg.position, joints.positions);
   EXPECT_EQ(msg.velocity, joints.velocities);
+}
+
+TEST(Conversions, FirstNonFiniteFieldIsNamed) {
+  geometry_msgs::Pose pose;
+  pose.orientation.w = 1;
+  EXPECT_FALSE(firstNonFinite(pose));
+  pose.orientation.z = std::numeric_limits<double>::quiet_NaN();
+  ASSERT_TRUE(firstNonFinite(pose));
+  EXPECT_EQ(firstNonFinite(pose)->rfind("orientation.z = ", 0), 0u) << *firstNonFinite(pose);
+  geometry_msgs::Twist twist;
+  twist.angular.y = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(*firstNonFinite(twist), "angular.y = inf");
+}
+
+TEST(TfPrefix, FramesGoUnderThePrefixAsTfResolveDoes) {
+  EXPECT_EQ(resolveFrame("tb3_1", "odom"), "tb3_1/odom");
+  EXPECT_EQ(resolveFrame("/tb3_1", "base_scan"), "tb3_1/base_scan");
+  EXPECT_EQ(resolveFrame("", "odom"), "odom");
+  EXPECT_EQ(resolveFrame("tb3_1", "/map"), "map");
+  EXPECT_EQ(resolveFrame("a/b", "imu_link"), "a/b/imu_link");
 }
 
 }  // namespace

@@ -9,9 +9,9 @@ import unittest
 
 import rospy
 import rostest
-from bullet_sim.msg import ModelState
-from bullet_sim.srv import (DeleteModel, GetModelState, SetModelState, SpawnModel,
-                            StepSimulation)
+from bullet_sim.srv import StepSimulation
+from gazebo_msgs.msg import ModelState
+from gazebo_msgs.srv import DeleteModel, GetModelState, SetModelState, SpawnModel
 from geometry_msgs.msg import Pose, Twist
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log

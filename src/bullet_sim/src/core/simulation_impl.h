@@ -1,0 +1,78 @@
+#ifndef BULLET_SIM_CORE_SIMULATION_IMPL_H
+#define BULLET_SIM_CORE_SIMULATION_IMPL_H
+
+// The state behind Simulation, shared by the files that implement it
+// (simulation.cpp: robots, stepping, sensors; simulation_entities.cpp: links, joints,
+// external forces and physics settings).
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "bullet_sim/external_forces.h"
+#include "bullet_sim/simulation.h"
+#include "diff_drive.h"
+#include "imu_sensor.h"
+#include "physics_robot.h"
+#include "physics_world.h"
+#include "sensor_schedule.h"
+
+namespace bullet_sim {
+
+struct Simulation::Impl {
+  struct Robot {
+    int id;  ///< spawn order; rebuilding in this order replays a run exactly
+    RobotSpec spec;
+    Eigen::Isometry3d T_world_spawn;
+    std::unique_ptr<PhysicsRobot> physics;
+    std::optional<DiffDriveController> drive;
+    std::vector<std::mt19937_64> ray_rngs, imu_rngs;
+    std::vector<ImuSensor> imus;
+    SensorSchedule schedule;
+  };
+
+  Impl(const WorldSpec& w, const SimConfig& c)
+      : world(w), cfg(c), physics(std::make_unique<PhysicsWorld>(w)) {}
+
+  Robot& robot(const std::string& name) {
+    auto it = robots.find(name);
+    if (it == robots.end()) throw std::out_of_range("no robot named '" + name + "'");
+    return *it->second;
+  }
+  const Robot& robot(const std::string& name) const {
+    return const_cast<Impl*>(this)->robot(name);
+  }
+
+  void seedSensors(const std::string& name, Robot* r) const {
+    r->ray_rngs.clear();
+    r->imu_rngs.clear();
+    for (const RaySpec& s : r->spec.rays) r->ray_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    for (const ImuSpec& s : r->spec.imus) r->imu_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    for (ImuSensor& imu : r->imus) imu.reset();
+  }
+
+  /// Sim time at the end of step k (counted from the last change of the physics step).
+  double timeAtStep(uint64_t k) const { return epoch_s + static_cast<double>(k) * cfg.physics_step_s; }
+
+  /// Adds the external wrenches and joint efforts acting in the coming step.
+  void applyExternalForces();
+
+  WorldSpec world;  ///< as loaded, with the gravity currently set
+  SimConfig cfg;
+  std::unique_ptr<PhysicsWorld> physics;
+  std::map<std::string, std::unique_ptr<Robot>> robots;
+  /// Steps since `epoch_s`, the sim time of the last physics-step change: sensor
+  /// schedules count in steps of the current length from there.
+  uint64_t steps = 0;
+  double epoch_s = 0;
+  int next_robot_id = 0;
+  ExternalForces forces;
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_SIMULATION_IMPL_H
