@@ -37,9 +37,16 @@ struct WorldModel {
 
 /// A world read from SDF. Static models become shapes, movable ones `models`; the poses
 /// of a saved <state> are applied, as Gazebo does when it loads a saved world.
+/// A static model of the world (its shapes are in WorldSpec::shapes) and where it stands.
+struct StaticModel {
+  std::string name;
+  Pose3 pose;  ///< the model frame in the world
+};
+
 struct WorldSpec {
   std::string name;
   std::vector<StaticShape> shapes;
+  std::vector<StaticModel> static_models;  ///< top-level static models, in file order
   std::vector<WorldModel> models;
   Eigen::Vector3d gravity{0, 0, -9.8};
   double max_step_size_s = 0.001;

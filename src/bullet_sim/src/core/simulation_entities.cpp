@@ -60,6 +60,9 @@ EntityState Simulation::entityState(const EntityName& entity) const {
 std::optional<EntityState> Simulation::frameState(const std::string& name) const {
   if (isWorldFrameName(name)) return EntityState{};
   if (const std::optional<EntityName> entity = findEntity(name)) return entityState(*entity);
+  for (const StaticModel& model : impl_->world.static_models) {
+    if (model.name == name) return EntityState{model.pose, Twist3{}};
+  }
   // gazebo_ros reads these as the world too (it has no map frame), after the entities.
   if (name == "map" || name == "/map") return EntityState{};
   return std::nullopt;

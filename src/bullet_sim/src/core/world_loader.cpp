@@ -88,6 +88,7 @@ class WorldReader {
     }
     if (model.Static() || anchored) {
       readStaticModel(model, model.Name(), T_world_model, saved, spec);
+      spec->static_models.push_back({model.Name(), toPose3(T_world_model)});
       return;
     }
     WorldModel movable;

@@ -46,6 +46,19 @@ bool isStaticSdf(const std::string& xml) {
 
 std::string inQuotes(const std::string& s) { return "'" + s + "'"; }
 
+/// The static world model of that name, if there is one.
+const bullet_sim::StaticModel* staticModel(const bullet_sim::Simulation& sim,
+                                           const std::string& name) {
+  for (const bullet_sim::StaticModel& model : sim.world().static_models)
+    if (model.name == name) return &model;
+  return nullptr;
+}
+
+std::string staticRefused(const std::string& name, const std::string& what) {
+  return "model " + inQuotes(name) + " is a static model of the world file: it cannot be " +
+         what + " here";
+}
+
 std::string unknownFrame(const std::string& field, const std::string& name) {
   return field + " " + inQuotes(name) +
          " does not exist (use \"\" or \"world\", a model name or \"model::link\")";
@@ -79,7 +92,8 @@ std::string ModelServices::spawnModel(const gazebo_msgs::SpawnModel::Request& re
   if (req.model_name.empty()) return "model_name is empty";
   if (req.model_name.find("::") != std::string::npos)
     return "model_name " + inQuotes(req.model_name) + " contains '::' (the link separator)";
-  if (hasModel(req.model_name)) return "model " + inQuotes(req.model_name) + " already exists";
+  if (hasModel(req.model_name) || staticModel(runner_.sim(), req.model_name))
+    return "model " + inQuotes(req.model_name) + " already exists";
   if (auto bad = firstNonFinite(req.initial_pose)) return "initial_pose " + *bad + " is not finite";
   const std::optional<bullet_sim::EntityState> frame =
       runner_.sim().frameState(req.reference_frame);
@@ -127,6 +141,11 @@ bool ModelServices::spawn(gazebo_msgs::SpawnModel::Request& req,
 
 bool ModelServices::remove(gazebo_msgs::DeleteModel::Request& req,
                            gazebo_msgs::DeleteModel::Response& res) {
+  if (staticModel(runner_.sim(), req.model_name)) {
+    res.success = false;
+    res.status_message = "DeleteModel: " + staticRefused(req.model_name, "deleted");
+    return true;
+  }
   res.success = runner_.remove(req.model_name);
   res.status_message = res.success
                            ? "DeleteModel: successfully deleted model " + req.model_name
@@ -140,14 +159,17 @@ bool ModelServices::getState(gazebo_msgs::GetModelState::Request& req,
   res.header.stamp.fromSec(sim.timeS());
   res.header.frame_id = req.relative_entity_name;
   const std::optional<bullet_sim::EntityState> frame = sim.frameState(req.relative_entity_name);
-  if (!hasModel(req.model_name)) {
+  const bullet_sim::StaticModel* fixed = staticModel(sim, req.model_name);
+  if (!hasModel(req.model_name) && !fixed) {
     res.status_message = "GetModelState: model " + inQuotes(req.model_name) + " does not exist";
   } else if (!frame) {
     res.status_message = "GetModelState: " +
                          unknownFrame("relative_entity_name", req.relative_entity_name);
   } else {
-    const bullet_sim::EntityState state =
-        bullet_sim::expressIn(sim.entityState({req.model_name, ""}), *frame);
+    const bullet_sim::EntityState state = bullet_sim::expressIn(
+        fixed ? bullet_sim::EntityState{fixed->pose, bullet_sim::Twist3{}}
+              : sim.entityState({req.model_name, ""}),
+        *frame);
     res.pose = toMsg(state.pose);
     res.twist = toMsg(state.twist);
     res.success = true;
@@ -157,6 +179,7 @@ bool ModelServices::getState(gazebo_msgs::GetModelState::Request& req,
 }
 
 std::string ModelServices::applyState(const gazebo_msgs::ModelState& state) {
+  if (staticModel(runner_.sim(), state.model_name)) return staticRefused(state.model_name, "moved");
   if (!hasModel(state.model_name)) return "model " + inQuotes(state.model_name) + " does not exist";
   if (auto bad = firstNonFinite(state.pose)) return "pose " + *bad + " is not finite";
   if (auto bad = firstNonFinite(state.twist)) return "twist " + *bad + " is not finite";
@@ -190,6 +213,8 @@ bool ModelServices::getWorld(gazebo_msgs::GetWorldProperties::Request&,
                              gazebo_msgs::GetWorldProperties::Response& res) {
   res.sim_time = runner_.sim().timeS();
   res.model_names = runner_.sim().robotNames();
+  for (const bullet_sim::StaticModel& model : runner_.sim().world().static_models)
+    res.model_names.push_back(model.name);
   res.rendering_enabled = true;
   res.success = true;
   res.status_message = "GetWorldProperties: got properties";

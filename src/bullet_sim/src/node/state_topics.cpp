@@ -39,10 +39,15 @@ void StateTopics::update() {
 void StateTopics::publishModelStates() const {
   gazebo_msgs::ModelStates msg;
   for (const std::string& robot : sim_.robotNames()) {
-    const bullet_sim::EntityState state = sim_.linkState(robot, sim_.rootLink(robot));
+    const bullet_sim::EntityState state = sim_.entityState({robot, ""});
     msg.name.push_back(robot);
     msg.pose.push_back(toMsg(state.pose));
     msg.twist.push_back(toMsg(state.twist));
+  }
+  for (const bullet_sim::StaticModel& model : sim_.world().static_models) {
+    msg.name.push_back(model.name);
+    msg.pose.push_back(toMsg(model.pose));
+    msg.twist.push_back(toMsg(bullet_sim::Twist3{}));
   }
   model_states_pub_.publish(msg);
 }

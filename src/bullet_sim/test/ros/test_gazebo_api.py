@@ -63,7 +63,7 @@ class GazeboApi(unittest.TestCase):
         self.spawn_boxes()
         self.ok("step_simulation", 250)
         response = self.ok("get_world_properties")
-        self.assertEqual(sorted(response.model_names), ["a", "b", ROBOT])
+        self.assertEqual(sorted(response.model_names), ["a", "b", ROBOT, "ground_plane"])
         self.assertAlmostEqual(response.sim_time, 0.25, places=9)
 
     def test_model_state_relative_to_a_model_and_a_link(self):
@@ -140,6 +140,17 @@ class GazeboApi(unittest.TestCase):
         self.ok("delete_model", "a")
         self.fails("delete_model", "'a'", "a")
         self.fails("get_model_state", "'a'", "a", "")
+
+    def test_static_world_models(self):
+        # flat.world's ground_plane: listed, at the origin, at rest; it cannot be moved,
+        # deleted or spawned over, and it serves as a reference frame.
+        self.assertPose(self.ok("get_model_state", "ground_plane", "").pose, 0, 0, 0, 0)
+        self.fails("delete_model", "static model of the world file", "ground_plane")
+        state = ModelState(model_name="ground_plane", pose=yaw_pose(1, 0))
+        self.fails("set_model_state", "cannot be moved", state)
+        self.fails("spawn_urdf_model", "already exists", "ground_plane", BOX_URDF, "", Pose(), "")
+        robot = self.ok("get_model_state", ROBOT, "ground_plane").pose
+        self.assertAlmostEqual(robot.position.x, SPAWN_X, delta=1e-3)
 
     def test_model_properties(self):
         response = self.ok("get_model_properties", ROBOT)
