@@ -9,6 +9,7 @@ URDF robot with spawn_model. A second package that compiles a Gazebo plugin must
 configure time with one clear message.
 """
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -58,7 +59,8 @@ class TestOverlay(unittest.TestCase):
         self.assertIn('turtlebot3_gazebo %s/models' % package, exports.stdout)
         run = bash(overlay + 'rostest turtlebot3_gazebo clients.test', 200)
         self.assertEqual(run.returncode, 0, run.stdout[-4000:])
-        self.assertIn('SUMMARY\n * RESULT: SUCCESS', run.stdout)
+        plain = re.sub(r'\x1b\[[0-9;]*m', '', run.stdout)  # rostest colours its summary
+        self.assertIn('SUMMARY\n * RESULT: SUCCESS\n * TESTS: 1', plain)
 
     def test_a_gazebo_plugin_stops_the_configuration_with_one_message(self):
         ws = os.path.join(self.tmp, 'plugin_ws')
