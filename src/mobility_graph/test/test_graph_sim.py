@@ -13,7 +13,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from svg_graph import read_svg_graph  # noqa: E402
 from system_wait import wait_for_connections  # noqa: E402
 
-SIM = '/bullet_sim'
+SIM = '/gazebo'  # the simulator node, named as gazebo_ros names it
 RSP = '/robot_state_publisher'
 
 
