@@ -98,7 +98,7 @@ def run_rtf(model, sim_s):
     scenario.check_spawn_scan(robot.scan(), "mujoco")
     track = scenario.Track()
     steps = int(round(sim_s / scenario.STEP_S))
-    start = time.monotonic()
+    start, cpu_start = time.monotonic(), time.process_time()
     step = 0
     while step < steps:
         if step % scenario.ODOM_PERIOD_STEPS == 0:
@@ -114,10 +114,11 @@ def run_rtf(model, sim_s):
                     next_multiple(step, scenario.ODOM_PERIOD_STEPS)) - step
         mujoco.mj_step(model, data, nstep)
         step += nstep
-    wall_s = time.monotonic() - start
+    wall_s, cpu_s = time.monotonic() - start, time.process_time() - cpu_start
     track.check(data.time, "mujoco")
     print("mujoco %s: drove %.2f m, turned %.2f rad; sanity checks passed"
           % (mujoco.__version__, track.length_m, track.turned_rad))
+    print("process CPU time %.3f s: real-time factor per CPU second %.1f" % (cpu_s, sim_s / cpu_s))
     print("mujoco real-time factor %.1f (%.1f s sim in %.2f s wall)" % (sim_s / wall_s, sim_s,
                                                                       wall_s))
 

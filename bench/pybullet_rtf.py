@@ -92,7 +92,7 @@ def main():
         scenario.check_spawn_scan(robot.scan(), "pybullet")
         track = scenario.Track()
         steps = int(round(sim_s / scenario.STEP_S))
-        start = time.monotonic()
+        start, cpu_start = time.monotonic(), time.process_time()
         for step in range(steps):
             if step % scenario.ODOM_PERIOD_STEPS == 0:
                 robot.drive(scenario.CMD_LINEAR_MPS, scenario.CMD_ANGULAR_RADPS)
@@ -103,12 +103,13 @@ def main():
             if step % scenario.IMU_PERIOD_STEPS == 0:
                 p.getLinkState(robot.robot, robot.links["imu_link"], computeLinkVelocity=1)
             p.stepSimulation()
-        wall_s = time.monotonic() - start
+        wall_s, cpu_s = time.monotonic() - start, time.process_time() - cpu_start
         track.check(sim_s, "pybullet")
     except scenario.SanityError as error:
         sys.exit("sanity check failed: %s" % error)
     print("pybullet: drove %.2f m, turned %.2f rad; sanity checks passed"
           % (track.length_m, track.turned_rad))
+    print("process CPU time %.3f s: real-time factor per CPU second %.1f" % (cpu_s, sim_s / cpu_s))
     print("pybullet real-time factor %.1f (%.1f s sim in %.2f s wall)" % (sim_s / wall_s, sim_s,
                                                                           wall_s))
 

@@ -5,7 +5,8 @@
 # time) and the real-time factor as the last line. bench/compare runs it beside the core
 # alone, MuJoCo and PyBullet.
 # Usage: bench/sim_rtf.sh [SIM_SECONDS]   (default 30; needs a built devel/ space,
-#        or BENCH_DEVEL=/path/to/devel)
+#        or BENCH_DEVEL=/path/to/devel; BENCH_NODE_PREFIX runs the node under a tool that
+#        keeps its process id, e.g. "valgrind --tool=callgrind --callgrind-out-file=/abs/f")
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
@@ -39,7 +40,7 @@ rosparam list > /dev/null || { echo "roscore did not start on port $PORT"; exit 
 
 rosrun xacro xacro turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro > "$WORK/burger.urdf"
 rosparam set robot_description -t "$WORK/burger.urdf"
-rosrun bullet_sim bullet_sim_node _world_file:="$WORLD" _real_time_factor:=0 \
+rosrun --prefix "${BENCH_NODE_PREFIX:-}" bullet_sim bullet_sim_node _world_file:="$WORLD" _real_time_factor:=0 \
   _spawn_yaw:=1.5675 _paused:=true > "$WORK/node.log" 2>&1 &
 node_pid=$!
 pids+=("$node_pid")
