@@ -2,9 +2,11 @@
 """N Burgers on the round track in one bullet_sim_node, every topic of every robot subscribed
 (bench/multi_listener.cpp), each driving the command's circle in its own part of the track
 (scenario.circle_starts), as fast as possible. The first robot comes from robot_description
-at the spawn pose; robots 2..N are added through /gazebo/spawn_urdf_model (the node's own
-bullet_sim/SpawnModel, gazebo_msgs' fields) under the namespaces tb3_2..tb3_N. Checks that
-every topic arrived at its rate, then prints the real-time factor last.
+at the spawn pose; robots 2..N are added through /gazebo/spawn_urdf_model (on this branch
+the node's own bullet_sim/SpawnModel, with gazebo_msgs' fields; the script takes whichever
+type the node serves) under the namespaces tb3_2..tb3_N. Checks that every robot drives at
+the command's twist and every topic arrived at its rate, then prints the real-time factor
+last.
 
 Usage: multi_robot.py LISTENER_BINARY ROBOTS SIM_SECONDS   (BENCH_ROS_PORT, default 11461)
 """
@@ -30,11 +32,14 @@ def spawn_others(env, urdf_file, poses):
     ros_bench.adopt_env(env)
     import math
     import rospy
+    import rosservice
     from geometry_msgs.msg import Pose, Twist
-    from bullet_sim.srv import SpawnModel
     rospy.init_node("bench_multi_robot", anonymous=True, disable_signals=True)
     rospy.wait_for_service("/gazebo/spawn_urdf_model", timeout=30)
-    spawn = rospy.ServiceProxy("/gazebo/spawn_urdf_model", SpawnModel)
+    # Whichever type the node serves (bullet_sim/SpawnModel now, gazebo_msgs/SpawnModel
+    # once it serves that): the fields are the same.
+    spawn_type = rosservice.get_service_class_by_name("/gazebo/spawn_urdf_model")
+    spawn = rospy.ServiceProxy("/gazebo/spawn_urdf_model", spawn_type)
     with open(urdf_file) as f:
         urdf = f.read()
     command = Twist()
@@ -45,7 +50,8 @@ def spawn_others(env, urdf_file, poses):
             pose = Pose()
             pose.position.x, pose.position.y = x, y
             pose.orientation.z, pose.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
-            result = spawn(ns, urdf, ns, pose, "world")
+            result = spawn(model_name=ns, model_xml=urdf, robot_namespace=ns,
+                           initial_pose=pose, reference_frame="world")
             if not result.success:
                 raise RuntimeError("spawning %s: %s" % (ns, result.status_message))
         publisher = rospy.Publisher(("/" if ns == "/" else "/%s/" % ns) + "cmd_vel", Twist,
@@ -57,6 +63,26 @@ def spawn_others(env, urdf_file, poses):
                            "the node subscribing to %s" % publisher.resolved_name)
     time.sleep(0.5)  # the latched commands reach the node
     return publishers
+
+
+def check_driving(count):
+    """Raises unless every robot moves at the command's twist (a robot at rest sleeps and
+    would cost nothing, flattering the figure)."""
+    import math
+    import rospy
+    import rosservice
+    state_type = rosservice.get_service_class_by_name("/gazebo/get_model_state")
+    get_state = rospy.ServiceProxy("/gazebo/get_model_state", state_type)
+    for ns in namespaces(count):
+        name = "turtlebot3_burger" if ns == "/" else ns
+        twist = get_state(model_name=name, relative_entity_name="world").twist
+        speed = math.hypot(twist.linear.x, twist.linear.y)
+        if not (abs(speed - scenario.CMD_LINEAR_MPS) < 0.03
+                and abs(twist.angular.z - scenario.CMD_ANGULAR_RADPS) < 0.1):
+            raise scenario.SanityError("%s moves at %.3f m/s, %.3f rad/s; the command is "
+                                       "%.1f m/s, %.1f rad/s" % (
+                                           name, speed, twist.angular.z, scenario.CMD_LINEAR_MPS,
+                                           scenario.CMD_ANGULAR_RADPS))
 
 
 def check_rates(output, count):
@@ -94,6 +120,10 @@ def main():
                                 timeout=900)
         if result.returncode != 0:
             sys.exit("multi_listener failed (exit %d)" % result.returncode)
+        try:
+            check_driving(count)
+        except scenario.SanityError as error:
+            sys.exit("sanity check failed: %s" % error)
     try:
         check_rates(result.stdout, count)
     except scenario.SanityError as error:
