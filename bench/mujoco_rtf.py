@@ -38,7 +38,8 @@ class Burger:
         self.lidar = model.site("base_scan").id
         self.imu = model.site("imu_link").id
         self.free_qpos = model.jnt_qposadr[model.joint("root").id]
-        self.hinges = [j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE]
+        hinge = mujoco.mjtJoint.mjJNT_HINGE
+        self.hinges = [j for j in range(model.njnt) if model.jnt_type[j] == hinge]
         self.left = model.actuator("wheel_left_joint").id
         self.right = model.actuator("wheel_right_joint").id
         angles = scenario.ray_angles_rad()
@@ -146,7 +147,7 @@ def frame_times_ms(model, frames, depth):
 
 
 def check_image(image, depth):
-    """Raises unless the first frame shows the walls and floor (not a blank or black frame)."""
+    """Raises unless a frame shows the walls and floor (not a blank or black frame)."""
     if depth:
         finite = image[(image > 0.02) & (image < 100)]
         if finite.size < image.size // 2 or finite.min() > 1.0:

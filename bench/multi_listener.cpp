@@ -55,7 +55,9 @@ template <class Msg>
 ros::Subscriber countHeader(ros::NodeHandle& nh, const std::string& topic, Window& window) {
   window.counts[topic] = 0;
   const boost::function<void(const typename Msg::ConstPtr&)> callback =
-      [&window, topic](const typename Msg::ConstPtr& msg) { window.count(topic, msg->header.stamp); };
+      [&window, topic](const typename Msg::ConstPtr& msg) {
+        window.count(topic, msg->header.stamp);
+      };
   return nh.subscribe<Msg>(topic, 1000, callback);
 }
 

@@ -3,6 +3,7 @@ with a private master port, roscore, the Burger's URDF, child processes that end
 script, and a node's resident memory."""
 import os
 import subprocess
+import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -28,7 +29,6 @@ def ros_env(port, devel=None):
 def adopt_env(env):
     """Makes this process see `env` (rospy reads os.environ and needs the devel PYTHONPATH)."""
     os.environ.update(env)
-    import sys
     sys.path[:0] = [p for p in env.get("PYTHONPATH", "").split(":") if p and p not in sys.path]
 
 

@@ -49,7 +49,8 @@ def test_spawn_scan_check_rejects_a_misplaced_wall():
     ranges[90], ranges[270] = 0.802, 0.535
     scenario.check_spawn_scan(ranges, "peer")
     ranges[270] = 0.535 + 0.05
-    with pytest.raises(scenario.SanityError, match="ray 270 at the spawn pose reads 0.5850 m, the wall table gives 0.5345"):
+    with pytest.raises(scenario.SanityError,
+                       match="ray 270 at the spawn pose reads 0.5850 m, the wall table gives"):
         scenario.check_spawn_scan(ranges, "peer")
 
 
