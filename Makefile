@@ -27,9 +27,9 @@ test: build
 screenshots: build
 	@scripts/screenshots.sh
 
+# bullet_sim against MuJoCo and PyBullet (installed into build/bench_venv), one table.
 bench: build
-	@scripts/setup.sh --bench
-	@bench/run_all.sh
+	@bench/compare
 
 clean:
 	rm -rf build devel

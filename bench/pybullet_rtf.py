@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """The bench scenario in PyBullet, for comparison: the Burger URDF on the round track's
-walls, 1 kHz physics, a 360-ray scan at 5 Hz, IMU (link state) at 200 Hz, odometry and
-joint states at 30 Hz, run as fast as possible. Prints the real-time factor.
+walls, 1 kHz physics, the command of bench/sim_rtf.sh through wheel velocity motors (torque
+limit and wheel acceleration of the Burger's plugin), a 360-ray scan at 5 Hz, IMU (link
+state) at 200 Hz, odometry and joint states at 30 Hz, run as fast as possible, no ROS.
+Checks its first scan against the wall table and the distance driven (bench/scenario.py),
+then prints the real-time factor last.
 
 Usage: pybullet_rtf.py URDF_FILE WORLD_FILE SIM_SECONDS
 """
@@ -9,25 +12,19 @@ import math
 import os
 import sys
 import time
-import xml.etree.ElementTree as ET
 
 import pybullet as p
 
-STEP_S = 0.001
-RAY_COUNT, RAY_MIN_M, RAY_MAX_M = 360, 0.12, 3.5
+import scenario
 
 
 def add_walls(world_file):
-    """Static boxes of the SDF world (models with a box collision), as PyBullet bodies."""
-    for model in ET.parse(world_file).getroot().iter("model"):
-        box = model.find("link/collision/geometry/box/size")
-        if box is None:
-            continue
-        x, y, z, _, _, yaw = (float(v) for v in model.find("pose").text.split())
-        half = [float(v) / 2 for v in box.text.split()]
-        shape = p.createCollisionShape(p.GEOM_BOX, halfExtents=half)
-        p.createMultiBody(0, shape, basePosition=[x, y, z],
-                          baseOrientation=p.getQuaternionFromEuler([0, 0, yaw]))
+    """The world's colliding static boxes as PyBullet bodies."""
+    for _, (x, y, z, yaw), size, _, collides in scenario.read_world(world_file):
+        if collides:
+            shape = p.createCollisionShape(p.GEOM_BOX, halfExtents=[s / 2 for s in size])
+            p.createMultiBody(0, shape, basePosition=[x, y, z],
+                              baseOrientation=p.getQuaternionFromEuler([0, 0, yaw]))
 
 
 def load_quietly(urdf_file):
@@ -36,47 +33,83 @@ def load_quietly(urdf_file):
     with open(os.devnull, "w") as devnull:
         os.dup2(devnull.fileno(), 1)
         try:
-            return p.loadURDF(urdf_file, [0, 0, 0], p.getQuaternionFromEuler([0, 0, 1.5675]))
+            return p.loadURDF(urdf_file, [0, 0, 0],
+                              p.getQuaternionFromEuler([0, 0, scenario.SPAWN_YAW_RAD]))
         finally:
             os.dup2(saved_stdout, 1)
             os.close(saved_stdout)
+
+
+class Burger:
+    """Sensors and diff drive of the robot in PyBullet."""
+
+    def __init__(self, robot):
+        self.robot = robot
+        count = p.getNumJoints(robot)
+        self.joints = {p.getJointInfo(robot, j)[1].decode(): j for j in range(count)}
+        self.links = {p.getJointInfo(robot, j)[12].decode(): j for j in range(count)}
+        self.moving = [j for j in range(count) if p.getJointInfo(robot, j)[2] != p.JOINT_FIXED]
+        self.angles = scenario.ray_angles_rad()
+        self.wheel_targets = (0.0, 0.0)
+
+    def scan(self):
+        pos, orn = p.getLinkState(self.robot, self.links["base_scan"])[:2]
+        yaw = p.getEulerFromQuaternion(orn)[2]
+        lo, hi = scenario.RAY_MIN_M, scenario.RAY_MAX_M
+        dirs = [(math.cos(a + yaw), math.sin(a + yaw)) for a in self.angles]
+        starts = [[pos[0] + lo * c, pos[1] + lo * s, pos[2]] for c, s in dirs]
+        ends = [[pos[0] + hi * c, pos[1] + hi * s, pos[2]] for c, s in dirs]
+        return [lo + hit[2] * (hi - lo) if hit[0] >= 0 else math.inf
+                for hit in p.rayTestBatch(starts, ends)]
+
+    def drive(self, linear_mps, angular_radps):
+        """One diff-drive update (30 Hz): wheel speeds ramp at the plugin's acceleration."""
+        target = scenario.wheel_speeds_radps(linear_mps, angular_radps)
+        max_delta = scenario.WHEEL_ACCEL_MPS2 / scenario.WHEEL_RADIUS_M * (
+            scenario.ODOM_PERIOD_STEPS * scenario.STEP_S)
+        self.wheel_targets = tuple(scenario.ramp(c, t, max_delta)
+                                   for c, t in zip(self.wheel_targets, target))
+        for name, speed in zip(("wheel_left_joint", "wheel_right_joint"), self.wheel_targets):
+            p.setJointMotorControl2(self.robot, self.joints[name], p.VELOCITY_CONTROL,
+                                    targetVelocity=speed, force=scenario.WHEEL_TORQUE_NM)
+
+    def odometry_and_joints(self):
+        pos, orn = p.getBasePositionAndOrientation(self.robot)
+        p.getBaseVelocity(self.robot)
+        p.getJointStates(self.robot, self.moving)
+        return pos, p.getEulerFromQuaternion(orn)[2]
 
 
 def main():
     urdf_file, world_file, sim_s = sys.argv[1], sys.argv[2], float(sys.argv[3])
     p.connect(p.DIRECT)
     p.setGravity(0, 0, -9.8)
-    p.setTimeStep(STEP_S)
+    p.setTimeStep(scenario.STEP_S)
     p.createMultiBody(0, p.createCollisionShape(p.GEOM_PLANE))
     add_walls(world_file)
-    robot = load_quietly(urdf_file)
-    joints = {p.getJointInfo(robot, j)[1].decode(): j for j in range(p.getNumJoints(robot))}
-    links = {p.getJointInfo(robot, j)[12].decode(): j for j in range(p.getNumJoints(robot))}
-    moving = [j for j in range(p.getNumJoints(robot))
-              if p.getJointInfo(robot, j)[2] != p.JOINT_FIXED]
-    for name in ("wheel_left_joint", "wheel_right_joint"):
-        p.setJointMotorControl2(robot, joints[name], p.VELOCITY_CONTROL, targetVelocity=0,
-                                force=10)
-    angles = [2 * math.pi * i / RAY_COUNT for i in range(RAY_COUNT)]
-    steps = int(round(sim_s / STEP_S))
-    start = time.monotonic()
-    for step in range(steps):
-        p.stepSimulation()
-        if step % 200 == 0:
-            pos, orn = p.getLinkState(robot, links["base_scan"])[:2]
-            yaw = p.getEulerFromQuaternion(orn)[2]
-            starts = [[pos[0] + RAY_MIN_M * math.cos(a + yaw), pos[1] + RAY_MIN_M * math.sin(a + yaw),
-                       pos[2]] for a in angles]
-            ends = [[pos[0] + RAY_MAX_M * math.cos(a + yaw), pos[1] + RAY_MAX_M * math.sin(a + yaw),
-                     pos[2]] for a in angles]
-            p.rayTestBatch(starts, ends)
-        if step % 5 == 0:
-            p.getLinkState(robot, links["imu_link"], computeLinkVelocity=1)
-        if step % 33 == 0:
-            p.getBasePositionAndOrientation(robot)
-            p.getBaseVelocity(robot)
-            p.getJointStates(robot, moving)
-    wall_s = time.monotonic() - start
+    robot = Burger(load_quietly(urdf_file))
+    try:
+        scenario.check_spawn_scan(robot.scan(), "pybullet")
+        track = scenario.Track()
+        steps = int(round(sim_s / scenario.STEP_S))
+        start, cpu_start = time.monotonic(), time.process_time()
+        for step in range(steps):
+            if step % scenario.ODOM_PERIOD_STEPS == 0:
+                robot.drive(scenario.CMD_LINEAR_MPS, scenario.CMD_ANGULAR_RADPS)
+                (x, y, _), yaw = robot.odometry_and_joints()
+                track.add(x, y, yaw)
+            if step % scenario.LIDAR_PERIOD_STEPS == 0:
+                robot.scan()
+            if step % scenario.IMU_PERIOD_STEPS == 0:
+                p.getLinkState(robot.robot, robot.links["imu_link"], computeLinkVelocity=1)
+            p.stepSimulation()
+        wall_s, cpu_s = time.monotonic() - start, time.process_time() - cpu_start
+        track.check(sim_s, "pybullet")
+    except scenario.SanityError as error:
+        sys.exit("sanity check failed: %s" % error)
+    print("pybullet: drove %.2f m, turned %.2f rad; sanity checks passed"
+          % (track.length_m, track.turned_rad))
+    print("process CPU time %.3f s: real-time factor per CPU second %.1f" % (cpu_s, sim_s / cpu_s))
     print("pybullet real-time factor %.1f (%.1f s sim in %.2f s wall)" % (sim_s / wall_s, sim_s,
                                                                           wall_s))
 

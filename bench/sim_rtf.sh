@@ -2,10 +2,11 @@
 # Benchmark of bullet_sim: the headless round-track scenario (Burger from the spawn pose
 # driving a slow circle in the west lane, 1 kHz physics, lidar, IMU, odometry, tf, joint states and /clock all published to a
 # subscriber) run as fast as possible for a fixed sim time. Prints the sensor rates (sim
-# time), a PyBullet comparison when pybullet is importable, and the real-time factor as
-# the last line.
+# time) and the real-time factor as the last line. bench/compare runs it beside the core
+# alone, MuJoCo and PyBullet.
 # Usage: bench/sim_rtf.sh [SIM_SECONDS]   (default 30; needs a built devel/ space,
-#        or BENCH_DEVEL=/path/to/devel)
+#        or BENCH_DEVEL=/path/to/devel; BENCH_NODE_PREFIX runs the node under a tool that
+#        keeps its process id, e.g. "valgrind --tool=callgrind --callgrind-out-file=/abs/f")
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
@@ -39,8 +40,9 @@ rosparam list > /dev/null || { echo "roscore did not start on port $PORT"; exit 
 
 rosrun xacro xacro turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro > "$WORK/burger.urdf"
 rosparam set robot_description -t "$WORK/burger.urdf"
-rosrun bullet_sim bullet_sim_node _world_file:="$WORLD" _real_time_factor:=0 \
-  _robot_name:=turtlebot3_burger _spawn_yaw:=1.5675 _paused:=true > "$WORK/node.log" 2>&1 &
+rosrun --prefix "${BENCH_NODE_PREFIX:-}" bullet_sim bullet_sim_node _world_file:="$WORLD" \
+  _real_time_factor:=0 _robot_name:=turtlebot3_burger _spawn_yaw:=1.5675 _paused:=true \
+  > "$WORK/node.log" 2>&1 &
 node_pid=$!
 pids+=("$node_pid")
 
@@ -61,11 +63,4 @@ kill -INT "$node_pid"
 wait "$node_pid" || true
 head -n -1 "$WORK/rates.txt"
 rtf="$(tail -n 1 "$WORK/rates.txt" | awk '{print $NF}')"
-if /usr/bin/python3 -c "import pybullet" 2>/dev/null; then
-  pyb="$(bench/pybullet_rtf.py "$WORK/burger.urdf" "$WORLD" "$SIM_S" 2>/dev/null | tail -n 1)"
-  pyb_rtf="$(awk '{print $4}' <<< "$pyb")"
-  echo "$pyb; bullet_sim/pybullet = $(awk -v a="$rtf" -v b="$pyb_rtf" 'BEGIN{printf "%.1f", a/b}')x"
-else
-  echo "pybullet is not importable (/usr/bin/python3 -m pip install --user pybullet): no comparison"
-fi
 echo "real-time factor $rtf"

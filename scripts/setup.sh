@@ -2,7 +2,7 @@
 # Installs what the workspace needs and is missing: Debian packages listed in
 # deps/apt-packages.txt and PyPI packages in deps/pip-requirements.txt (for
 # Debian's /usr/bin/python3, which the ROS Python modules need). A second run
-# only checks and exits.
+# only checks and exits. --bench also makes the benchmark's virtual environment.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,12 +22,11 @@ else
   echo "setup: all $(wc -w <<<"$packages") Debian packages present"
 fi
 
-# PyPI requirements: deps/pip-requirements.txt, and with --bench also
-# deps/pip-bench.txt (the PyBullet comparison of `make bench`).
-requirement_files=(deps/pip-requirements.txt)
-[[ "${1:-}" == "--bench" ]] && requirement_files+=(deps/pip-bench.txt)
-for requirements in "${requirement_files[@]}"; do
-  pip_missing=$(/usr/bin/python3 - "$requirements" <<'PY'
+# PyPI requirements: deps/pip-requirements.txt for /usr/bin/python3; with --bench also
+# deps/pip-bench.txt (the peers of bench/compare) into the virtual environment
+# build/bench_venv, so that the benchmark's packages never reach the workspace's Python.
+pip_check() {  # prints the requirements of $2 that interpreter $1 lacks
+  "$1" - "$2" <<'PY'
 import sys
 from importlib import metadata
 missing = []
@@ -43,11 +42,24 @@ for line in open(sys.argv[1]):
         missing.append(req)
 print(' '.join(missing))
 PY
-  )
+}
+
+pip_missing=$(pip_check /usr/bin/python3 deps/pip-requirements.txt)
+if [[ -n "$pip_missing" ]]; then
+  echo "setup: installing for /usr/bin/python3: $pip_missing"
+  /usr/bin/python3 -m pip install -q --break-system-packages --root-user-action=ignore $pip_missing
+else
+  echo "setup: PyPI packages of deps/pip-requirements.txt present"
+fi
+
+if [[ "${1:-}" == "--bench" ]]; then
+  venv=build/bench_venv
+  [[ -x "$venv/bin/python" ]] || { echo "setup: creating $venv"; mkdir -p build; /usr/bin/python3 -m venv "$venv"; }
+  pip_missing=$(pip_check "$venv/bin/python" deps/pip-bench.txt)
   if [[ -n "$pip_missing" ]]; then
-    echo "setup: installing for /usr/bin/python3: $pip_missing"
-    /usr/bin/python3 -m pip install -q --break-system-packages --root-user-action=ignore $pip_missing
+    echo "setup: installing into $venv: $pip_missing"
+    "$venv/bin/python" -m pip install -q --disable-pip-version-check $pip_missing
   else
-    echo "setup: PyPI packages of $requirements present"
+    echo "setup: PyPI packages of deps/pip-bench.txt present in $venv"
   fi
-done
+fi

@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""Launch to first /scan: wall time from starting
+`roslaunch turtlebot3_gazebo roundTrack_simulation.launch gui:=false` until a subscriber in
+this process has its first laser scan, either with the master started by roslaunch
+(`own-master`) or with a master already running (`running-master`). rospy is imported before
+the clock starts. Then, after 5 s of simulation at real time, reads bullet_sim_node's
+resident memory. Prints both, the launch time last.
+
+Usage: first_scan.py own-master|running-master   (BENCH_ROS_PORT, default 11462)
+"""
+import os
+import sys
+import threading
+import time
+
+import ros_bench
+
+
+def main():
+    mode = sys.argv[1]
+    if mode not in ("own-master", "running-master"):
+        sys.exit("usage: first_scan.py own-master|running-master")
+    port = int(os.environ.get("BENCH_ROS_PORT", "11462"))
+    env = ros_bench.ros_env(port)
+    env["ROS_HOME"] = os.path.join(os.environ.get("TMPDIR", "/tmp"), "bench_first_scan_ros_home")
+    ros_bench.adopt_env(env)
+    import rosgraph
+    import rospy
+    from sensor_msgs.msg import LaserScan
+    master = rosgraph.Master("/bench_first_scan")
+    got_scan = threading.Event()
+    with ros_bench.Processes() as procs:
+        if mode == "running-master":
+            ros_bench.start_master(procs, env, port)
+        elif ros_bench.master_up(env):
+            sys.exit("a ROS master already runs on port %d" % port)
+        start = time.monotonic()
+        launch = procs.start(["roslaunch", "-p", str(port), "turtlebot3_gazebo",
+                              "roundTrack_simulation.launch", "gui:=false"], env)
+        ros_bench.wait_for(master.is_online, "the launch's master", poll_s=0.005)
+        rospy.init_node("bench_first_scan", anonymous=True, disable_signals=True)
+        rospy.Subscriber("/scan", LaserScan, lambda _: got_scan.set(), queue_size=1)
+        if not got_scan.wait(timeout=60):
+            sys.exit("no /scan within 60 s of the launch")
+        launch_s = time.monotonic() - start
+        time.sleep(5.0)
+        node = ros_bench.process_named(ros_bench.descendants(launch.pid), "bullet_sim_node")
+        if node is None:
+            sys.exit("bullet_sim_node is not running under roslaunch")
+        memory_mb = ros_bench.resident_mb(node)
+        rospy.signal_shutdown("measured")
+    print("bullet_sim_node resident memory %.1f MB" % memory_mb)
+    print("launch to first /scan (%s) %.3f s" % (mode, launch_s))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,41 @@
+"""Tests of bench/compare's parsing, alternation and table: /usr/bin/python3 -m pytest bench/"""
+import os
+import sys
+
+import pytest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from comparison import RTF, Measurement, alternated, last_line, table  # noqa: E402
+
+
+def test_parse_takes_the_last_figure_of_each_pattern():
+    m = Measurement(["x"], [("core", "core", RTF, "x"), ("mem", "memory", r"([0-9.]+) MB", "MB")])
+    output = ("process CPU time 0.2 s: real-time factor per CPU second 145.8\n"
+              "sim 30.0 s in 0.311 s wall: real-time factor 96.4\n12.5 MB\n")
+    assert m.parse(output) == {"core": 96.4, "mem": 12.5}
+    with pytest.raises(ValueError, match="memory: no figure"):
+        m.parse("real-time factor 3\n")
+
+
+def test_rtf_pattern_reads_the_peers_lines():
+    m = Measurement(["x"], [("mujoco", "mujoco", RTF, "x")])
+    assert m.parse("mujoco real-time factor 104.8 (30.0 s sim in 0.29 s wall)\n") == {
+        "mujoco": 104.8}
+
+
+def test_rounds_rotate_each_group():
+    a, b, c = (Measurement([n], [(n, n, RTF, "x")]) for n in "abc")
+    d, e = (Measurement([n], [(n, n, RTF, "x")], group=1) for n in "de")
+    keys = [[m.key for m in alternated([a, b, c, d, e], r)] for r in range(3)]
+    assert keys == [list("abcde"), list("bcaed"), list("cabde")]
+
+
+def test_table_and_last_line_give_ratios_to_the_peers():
+    results = {"node": [100, 90, 110], "core": [160], "mujoco": [120, 118, 124],
+               "pybullet": [20], "camera_ours": [0.5], "camera_mujoco": [5.0]}
+    ms = [Measurement([k], [(k, k, RTF, "ms" if "camera" in k else "x")]) for k in results]
+    text = table(ms, results)
+    assert "| node | 100x (90-110) | 0.83x MuJoCo, 5.00x PyBullet |" in text
+    assert "| camera_ours | 0.50 ms (0.50-0.50) | 10.00x MuJoCo |" in text
+    assert last_line(results) == ("vs_mujoco_node=0.83 vs_mujoco_core=1.33 "
+                                  "vs_mujoco_camera=10.00 vs_pybullet_node=5.00")
