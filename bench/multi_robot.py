@@ -2,9 +2,8 @@
 """N Burgers on the round track in one bullet_sim_node, every topic of every robot subscribed
 (bench/multi_listener.cpp), each driving the command's circle in its own part of the track
 (scenario.circle_starts), as fast as possible. The first robot comes from robot_description
-at the spawn pose; robots 2..N are added through /gazebo/spawn_urdf_model (on this branch
-the node's own bullet_sim/SpawnModel, with gazebo_msgs' fields; the script takes whichever
-type the node serves) under the namespaces tb3_2..tb3_N. Checks that every robot drives at
+at the spawn pose; robots 2..N are added through /gazebo/spawn_urdf_model
+(gazebo_msgs/SpawnModel) under the namespaces tb3_2..tb3_N. Checks that every robot drives at
 the command's twist and every topic arrived at its rate, then prints the real-time factor
 last.
 
@@ -32,14 +31,11 @@ def spawn_others(env, urdf_file, poses):
     ros_bench.adopt_env(env)
     import math
     import rospy
-    import rosservice
+    from gazebo_msgs.srv import SpawnModel
     from geometry_msgs.msg import Pose, Twist
     rospy.init_node("bench_multi_robot", anonymous=True, disable_signals=True)
     rospy.wait_for_service("/gazebo/spawn_urdf_model", timeout=30)
-    # Whichever type the node serves (bullet_sim/SpawnModel now, gazebo_msgs/SpawnModel
-    # once it serves that): the fields are the same.
-    spawn_type = rosservice.get_service_class_by_name("/gazebo/spawn_urdf_model")
-    spawn = rospy.ServiceProxy("/gazebo/spawn_urdf_model", spawn_type)
+    spawn = rospy.ServiceProxy("/gazebo/spawn_urdf_model", SpawnModel)
     with open(urdf_file) as f:
         urdf = f.read()
     command = Twist()
@@ -112,7 +108,8 @@ def main():
                        check=True)
         x, y, yaw = poses[0]
         procs.start(["rosrun", "bullet_sim", "bullet_sim_node", "_world_file:=" + ros_bench.WORLD,
-                     "_real_time_factor:=0", "_paused:=true", "_spawn_x:=%g" % x,
+                     "_real_time_factor:=0", "_paused:=true", "_robot_name:=turtlebot3_burger",
+                     "_spawn_x:=%g" % x,
                      "_spawn_y:=%g" % y, "_spawn_yaw:=%g" % yaw], env)
         spawn_others(env, urdf_file, poses)
         result = subprocess.run([listener, str(WARMUP_S), str(sim_s)] + namespaces(count),
