@@ -26,6 +26,14 @@ struct SimConfig {
 
 enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates };
 
+/// How a model stands: upright or tipped over, free or pushed into a static body.
+struct ModelCondition {
+  double tilt_rad = 0;           ///< angle between the root link's z axis and the world's
+  double wall_penetration_m = 0; ///< deepest reach of any of its bodies into a static body
+  bool tippedOver() const { return tilt_rad > 0.7853981633974483; }  ///< beyond 45 degrees
+  bool inWall() const { return wall_penetration_m > 0.01; }        ///< deeper than 1 cm
+};
+
 /// A sensor whose update period elapsed; index points into the robot spec's
 /// vector of that kind (0 for Odometry and JointStates).
 struct DueSensor {
@@ -63,6 +71,10 @@ class Simulation {
   void setCmdVel(const std::string& robot, double linear_mps, double angular_radps);
   Pose3 modelPose(const std::string& robot) const;  ///< model frame in the world
   Twist3 modelTwist(const std::string& robot) const;
+  ModelCondition condition(const std::string& robot) const;
+  /// What the simulation noticed since the last call (how each robot was built: joints held
+  /// fixed, mesh collisions, masses given), each message once, naming the model.
+  std::vector<std::string> takeWarnings();
   void setModelState(const std::string& robot, const Pose3& pose, const Twist3& twist);
 
   // Sensor reads, computed on demand: a sensor nobody reads costs nothing.

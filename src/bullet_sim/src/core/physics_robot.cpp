@@ -146,6 +146,28 @@ Eigen::Isometry3d PhysicsRobot::T_world_body(size_t body) const {
   return toEigen(bodies_[body].rigid->getWorldTransform());
 }
 
+double PhysicsRobot::staticPenetrationM() const {
+  double deepest_m = 0;
+  btDispatcher* dispatcher = world_->getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    const btCollisionObject* a = manifold->getBody0();
+    const btCollisionObject* b = manifold->getBody1();
+    const bool ours_a = ownsBody(a), ours_b = ownsBody(b);
+    if (!((ours_a && b->isStaticObject()) || (ours_b && a->isStaticObject()))) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      deepest_m = std::max(deepest_m, -double(manifold->getContactPoint(p).getDistance()));
+    }
+  }
+  return deepest_m;
+}
+
+bool PhysicsRobot::ownsBody(const btCollisionObject* object) const {
+  for (const Body& body : bodies_)
+    if (body.rigid.get() == object) return true;
+  return false;
+}
+
 bool PhysicsRobot::hasLink(const std::string& link) const {
   return plan_.body_of_link.count(link) > 0;
 }

@@ -37,6 +37,9 @@ class PhysicsRobot {
   /// World-frame velocity of a link's origin.
   Twist3 linkTwist(const std::string& link) const;
   bool hasLink(const std::string& link) const;
+  /// How deep (m, >= 0) any body of the robot reaches into a static body (a wall, the
+  /// ground), from the contacts of the last collision pass.
+  double staticPenetrationM() const;
 
   const RobotPlan& plan() const { return plan_; }
   /// Index into plan().joints, or -1.
@@ -72,6 +75,7 @@ class PhysicsRobot {
     Eigen::Isometry3d T_com_root;  ///< inverse of the plan's T_root_com
   };
   void buildBody(const BodyPlan& plan, int robot_id);
+  bool ownsBody(const btCollisionObject* object) const;
   /// Puts every body where the zero-joint configuration at T_world_model puts it.
   void placeBodies(const Eigen::Isometry3d& T_world_model);
   Eigen::Isometry3d T_world_body(size_t body) const;

@@ -1,5 +1,6 @@
 #include "bullet_sim/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -54,6 +55,8 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
   r->T_world_spawn = toIsometry(pose) * toIsometry(spec.root_link_in_model);
   RobotPlan plan = planRobot(spec);
   r->spec.warnings.insert(r->spec.warnings.end(), plan.warnings.begin(), plan.warnings.end());
+  for (const std::string& warning : plan.warnings)
+    impl_->pending_warnings.push_back("model '" + name + "': " + warning);
   r->id = impl_->next_robot_id;
   r->physics = std::make_unique<PhysicsRobot>(impl_->physics->dynamics(), r->id, std::move(plan),
                                               r->T_world_spawn);
@@ -159,6 +162,22 @@ Twist3 Simulation::modelTwist(const std::string& robot) const {
       modelPose(robot).position - r.physics->linkPose(root).translation();
   twist.linear += twist.angular.cross(root_to_model);
   return twist;
+}
+
+ModelCondition Simulation::condition(const std::string& robot) const {
+  const Impl::Robot& r = impl_->robot(robot);
+  ModelCondition c;
+  const Eigen::Vector3d up =
+      r.physics->linkPose(r.physics->plan().bodies[0].root_link).linear().col(2);
+  c.tilt_rad = std::acos(std::clamp(up.z(), -1.0, 1.0));
+  c.wall_penetration_m = r.physics->staticPenetrationM();
+  return c;
+}
+
+std::vector<std::string> Simulation::takeWarnings() {
+  std::vector<std::string> warnings;
+  warnings.swap(impl_->pending_warnings);
+  return warnings;
 }
 
 void Simulation::setModelState(const std::string& robot, const Pose3& pose, const Twist3& twist) {

@@ -70,6 +70,7 @@ struct Simulation::Impl {
   uint64_t steps = 0;
   double epoch_s = 0;
   int next_robot_id = 0;
+  std::vector<std::string> pending_warnings;  ///< for Simulation::takeWarnings()
   ExternalForces forces;
 };
 

@@ -29,6 +29,7 @@ void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec
   // The namespace first: an invalid one throws before the simulation holds the robot.
   const ros::NodeHandle robot_nh(nh_, robot_namespace);
   sim_.spawnRobot(name, spec, pose);
+  logSimulationWarnings();
   try {
     const std::string tf_prefix = findTfPrefix(robot_nh);
     robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh, tf_prefix);
@@ -72,6 +73,10 @@ void SimRunner::step() {
     if (robot != robots_.end()) robot->second->publish(sensor);
   }
   state_topics_.update();
+}
+
+void SimRunner::logSimulationWarnings() {
+  for (const std::string& warning : sim_.takeWarnings()) ROS_WARN("%s", warning.c_str());
 }
 
 void SimRunner::publishClock() {

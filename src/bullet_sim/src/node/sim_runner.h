@@ -36,6 +36,8 @@ class SimRunner {
 
   /// Advances one physics step and publishes /clock and every due, subscribed sensor.
   void step();
+  /// Logs, once each, what the simulation noticed while building models.
+  void logSimulationWarnings();
   /// Publishes the current sim time on /clock.
   void publishClock();
 

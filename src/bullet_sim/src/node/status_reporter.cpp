@@ -15,6 +15,35 @@ double yawRad(const Eigen::Quaterniond& q) {
 
 }  // namespace
 
+std::string statusLine(const bullet_sim::Simulation& sim, double real_time_factor,
+                       bool* trouble) {
+  std::ostringstream line;
+  line.setf(std::ios::fixed);
+  line.precision(3);
+  line << "sim time " << sim.timeS() << " s, real-time factor ";
+  line.precision(2);
+  line << real_time_factor;
+  *trouble = false;
+  for (const std::string& robot : sim.robotNames()) {
+    const bullet_sim::Pose3 pose = sim.modelPose(robot);
+    line.precision(3);
+    line << ", " << robot << " at x " << pose.position.x() << " y " << pose.position.y()
+         << " yaw " << yawRad(pose.orientation);
+    const bullet_sim::ModelCondition condition = sim.condition(robot);
+    if (condition.tippedOver()) {
+      line.precision(0);
+      line << " TIPPED OVER (tilted " << condition.tilt_rad * 180.0 / M_PI << " deg)";
+      *trouble = true;
+    }
+    if (condition.inWall()) {
+      line.precision(3);
+      line << " STUCK IN A WALL (" << condition.wall_penetration_m << " m deep)";
+      *trouble = true;
+    }
+  }
+  return line.str();
+}
+
 StatusReporter::StatusReporter(const bullet_sim::Simulation& sim, double period_s)
     : sim_(sim), period_(period_s), last_wall_(Clock::now()), last_sim_s_(sim.timeS()) {}
 
@@ -26,19 +55,13 @@ void StatusReporter::maybeReport() {
   // After a reset sim time restarted from 0 within this period.
   const double sim_advanced_s = sim_s >= last_sim_s_ ? sim_s - last_sim_s_ : sim_s;
   const double factor = sim_advanced_s / wall_elapsed.count();
-  std::ostringstream line;
-  line.setf(std::ios::fixed);
-  line.precision(3);
-  line << "sim time " << sim_s << " s, real-time factor ";
-  line.precision(2);
-  line << factor;
-  line.precision(3);
-  for (const std::string& robot : sim_.robotNames()) {
-    const bullet_sim::Pose3 pose = sim_.modelPose(robot);
-    line << ", " << robot << " at x " << pose.position.x() << " y " << pose.position.y()
-         << " yaw " << yawRad(pose.orientation);
+  bool trouble = false;
+  const std::string line = statusLine(sim_, factor, &trouble);
+  if (trouble) {
+    ROS_WARN_STREAM(line);
+  } else {
+    ROS_INFO_STREAM(line);
   }
-  ROS_INFO_STREAM(line.str());
   last_wall_ = now;
   last_sim_s_ = sim_s;
 }

@@ -4,8 +4,14 @@
 #include <bullet_sim/simulation.h>
 
 #include <chrono>
+#include <string>
 
 namespace bullet_sim_node {
+
+/// The status line: sim time, real-time factor, and each model's pose, with "TIPPED OVER"
+/// (tilted beyond 45 degrees) or "STUCK IN A WALL" (more than 1 cm into a static body)
+/// after a model in that state; `trouble` tells whether any is.
+std::string statusLine(const bullet_sim::Simulation& sim, double real_time_factor, bool* trouble);
 
 class StatusReporter {
  public:
