@@ -6,6 +6,7 @@
 #include "sim_runner.h"
 #include "sim_services.h"
 #include "status_reporter.h"
+#include "world_markers_io.h"
 
 #include <bullet_sim/errors.h>
 #include <bullet_sim/robot_spec.h>
@@ -48,6 +49,7 @@ int run(const Config& config, ros::NodeHandle& nh) {
   bullet_sim_node::SimServices services(runner, ros::NodeHandle("/gazebo"));
   bullet_sim_node::Pacer pacer(config.real_time_factor);
   bullet_sim_node::StatusReporter status(sim, config.status_period_s);
+  bullet_sim_node::WorldMarkersIo world_markers(sim, ros::NodeHandle("/gazebo"));
   ROS_INFO("world %s (%s), robot %s, physics step %g s, real-time factor %g%s",
            world.name.c_str(), config.world_file.c_str(), robot_name.c_str(),
            sim_config.physics_step_s, config.real_time_factor,
@@ -66,6 +68,7 @@ int run(const Config& config, ros::NodeHandle& nh) {
       pacer.waitUntil(sim.timeS());
     }
     status.maybeReport();
+    world_markers.update();
   }
   return 0;
 }
