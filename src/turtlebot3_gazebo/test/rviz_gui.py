@@ -56,9 +56,19 @@ class Panel:
             return text if text is not None and condition(text) else None
         return wait_for(check, TIMEOUT_S, what, poll_s=0.1)
 
+    def _box(self, widget):
+        return (self.report() or {}).get('widgets', {}).get(widget)
+
     def _window_point(self, widget, dx=None):
-        box = wait_for(lambda: (self.report() or {}).get('widgets', {}).get(widget),
-                       TIMEOUT_S, f'panel widget {widget} in {self.path}')
+        # RViz settles its docks for a while after start: click where the widget has stayed.
+        last = [None]
+
+        def settled():
+            box, previous = self._box(widget), last[0]
+            last[0] = box
+            return box if box is not None and box == previous else None
+        box = wait_for(settled, TIMEOUT_S, f'panel widget {widget} settled in {self.path}',
+                       poll_s=0.5)
         wx, wy, _, _ = x11.geometry(self.window)
         x = box['x'] + (box['w'] // 2 if dx is None else dx)
         return x - wx, box['y'] + box['h'] // 2 - wy
