@@ -32,6 +32,8 @@ const char* const kSetModelState = "/gazebo/set_model_state";
 // How often the idle worker looks for the simulator: a panel shows a started or stopped
 // simulator within this time.
 constexpr std::chrono::milliseconds kRefreshPeriod{1000};
+// A paused simulator still publishes /clock, at the same time: still this long = paused.
+constexpr double kStillClockS = 0.3;
 
 double wallNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
@@ -92,6 +94,7 @@ SimSnapshot SimClient::snapshot() const {
   std::lock_guard<std::mutex> lock(mutex_);
   SimSnapshot s = state_;
   s.measured_rtf = rtf_.factor(wallNow());
+  s.clock_stalled = rtf_.stalled(wallNow(), kStillClockS);
   return s;
 }
 

@@ -7,7 +7,7 @@ namespace bullet_sim_rviz {
 
 bool isPaused(const SimSnapshot& s) {
   if (s.paused) return *s.paused;
-  return s.measured_rtf && std::fabs(*s.measured_rtf) < 1e-9;
+  return s.clock_stalled;
 }
 
 std::string headline(const SimSnapshot& s) {

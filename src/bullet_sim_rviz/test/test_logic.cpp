@@ -36,6 +36,16 @@ TEST(RtfEstimator, PausedIsZeroAndSilenceIsUnknown) {
   EXPECT_FALSE(rtf.factor(2.5).has_value());
 }
 
+TEST(RtfEstimator, StalledWhileTheClockStandsStill) {
+  RtfEstimator rtf(2.0);
+  for (int i = 0; i <= 10; ++i) rtf.addSample(0.1 * i, 0.1 * i);  // running until 1.0 s
+  EXPECT_FALSE(rtf.stalled(1.0, 0.3));
+  for (int i = 11; i <= 15; ++i) rtf.addSample(0.1 * i, 1.0);  // paused at 1.0 s of wall
+  EXPECT_TRUE(rtf.stalled(1.5, 0.3));
+  EXPECT_FALSE(rtf.stalled(1.2, 0.3));   // only 0.2 s still so far
+  EXPECT_FALSE(rtf.stalled(4.0, 0.3));   // no /clock for longer than the window: unknown
+}
+
 TEST(RtfEstimator, NeedsAQuarterWindowAndRestartsAfterAReset) {
   RtfEstimator rtf(2.0);
   rtf.addSample(0.0, 10.0);
@@ -84,7 +94,7 @@ TEST(SimSnapshot, HeadlineSaysWhenNoSimulatorRuns) {
   s.sim_time_s = 3.0;
   s.measured_rtf = 0.98;
   EXPECT_EQ(headline(s), "Simulation running");
-  s.measured_rtf = 0.0;  // no physics properties served: a still clock means paused
+  s.clock_stalled = true;  // no physics properties served: a still clock means paused
   EXPECT_EQ(headline(s), "Simulation paused");
   s.paused = false;  // what get_physics_properties says wins
   EXPECT_EQ(headline(s), "Simulation running");

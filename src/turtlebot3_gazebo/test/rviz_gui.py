@@ -9,7 +9,7 @@ import rospkg
 import rospy
 from gazebo_msgs.srv import GetModelState
 
-from mobility_testing import x11
+from mobility_testing import images, x11
 from mobility_testing.rviz_view import OrbitView
 from mobility_testing.waiting import wait_for
 from rosgraph_msgs.msg import Clock
@@ -80,6 +80,19 @@ class Panel:
     def wait_enabled(self, widget):
         wait_for(lambda: (self.report() or {}).get('widgets', {}).get(widget, {}).get('enabled'),
                  TIMEOUT_S, f'panel widget {widget} enabled', poll_s=0.1)
+
+    def screenshot(self, path, margin_px=8):
+        """Saves a picture of the panel's widgets (with a margin) at path ("" saves nothing)."""
+        if not path:
+            return
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+        boxes = [b for b in self.report()['widgets'].values() if b['visible']]
+        left = min(b['x'] for b in boxes) - margin_px
+        top = min(b['y'] for b in boxes) - 4 * margin_px - 40   # the headline above the grid
+        right = max(b['x'] + b['w'] for b in boxes) + margin_px
+        bottom = max(b['y'] + b['h'] for b in boxes) + 4 * margin_px  # the result line
+        screen = x11.screenshot_array('root', path)
+        images.save_png(screen[max(top, 0):bottom, max(left, 0):right], path)
 
     def type_into(self, widget, text):
         """Replaces the text of a spin box or editable combo box."""

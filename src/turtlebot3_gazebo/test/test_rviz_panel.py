@@ -78,6 +78,8 @@ class RvizPanel(unittest.TestCase):
         self.panel.wait_text('result', lambda t: t.startswith('stepped 250'), 'the step result')
         self.assertAlmostEqual(self.clock_span(0.5), 0.0)
         self.assertAlmostEqual(self.clock.now(), expected, places=6)
+        self.panel.wait_text('headline', lambda t: t == 'Simulation paused', 'still paused')
+        self.panel.screenshot(rospy.get_param('~panel_screenshot', ''))
         self.panel.click('play')
 
     def test_3_reset_world_puts_the_robot_back(self):

@@ -23,11 +23,16 @@ class RtfEstimator {
   /// samples exist or when the newest sample is older than the window (no /clock any more).
   std::optional<double> factor(double now_wall_s) const;
 
+  /// True when /clock still arrives (within the window) but its time has not moved for
+  /// `still_s` wall seconds: a paused simulator.
+  bool stalled(double now_wall_s, double still_s) const;
+
   void clear() { samples_.clear(); }
 
  private:
   double window_s_;
   std::deque<std::pair<double, double>> samples_;  ///< (wall_s, sim_s), oldest first
+  double last_advance_wall_s_ = 0;  ///< when the sim time last moved forward
 };
 
 }  // namespace bullet_sim_rviz

@@ -12,13 +12,14 @@ struct SimSnapshot {
   bool services_available = false;  ///< /gazebo/pause_physics is advertised
   std::optional<double> sim_time_s;  ///< the newest /clock
   std::optional<double> measured_rtf;  ///< from /clock against wall time
+  bool clock_stalled = false;          ///< /clock arrives but its time stands still
   std::optional<bool> paused;          ///< from get_physics_properties, when it is served
   std::optional<double> target_rtf;    ///< max_update_rate * time_step, when served
   std::vector<std::string> models;     ///< get_world_properties' model_names
 };
 
 /// The panel's headline: no simulator, waiting for /clock, running or paused. When
-/// get_physics_properties is not served, a measured factor of 0 counts as paused.
+/// get_physics_properties is not served, a stalled clock counts as paused.
 std::string headline(const SimSnapshot& s);
 /// True when the simulation is known or measured to be paused.
 bool isPaused(const SimSnapshot& s);
