@@ -4,8 +4,6 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
-#include <algorithm>
-
 namespace bullet_sim_node {
 namespace {
 
@@ -45,42 +43,21 @@ visualization_msgs::Marker toMarkerMsg(const bullet_sim::MarkerShape& shape) {
 
 WorldMarkersIo::WorldMarkersIo(const bullet_sim::Simulation& sim, const ros::NodeHandle& nh)
     : sim_(sim),
-      static_markers_(bullet_sim::worldShapeMarkers(sim.world())),
-      changes_(kPositionToleranceM, kAngleToleranceRad),
+      markers_(sim.world(), kPositionToleranceM, kAngleToleranceRad),
       last_check_(std::chrono::steady_clock::now()) {
   ros::NodeHandle handle(nh);
   pub_ = handle.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
-  publish({});
-}
-
-void WorldMarkersIo::track(const std::string& name) {
-  tracked_.insert(name);
-  last_check_ = std::chrono::steady_clock::time_point{};
-}
-
-std::vector<bullet_sim::MarkerShape> WorldMarkersIo::trackedMarkers() const {
-  std::vector<bullet_sim::MarkerShape> markers;
-  for (const std::string& name : tracked_) {
-    const auto model = bullet_sim::modelMarkers(name, sim_.robotSpec(name), sim_.linkPoses(name));
-    markers.insert(markers.end(), model.begin(), model.end());
-  }
-  return markers;
+  if (const auto all = markers_.update(sim_)) publish(*all);
 }
 
 void WorldMarkersIo::update() {
   const auto now = std::chrono::steady_clock::now();
-  if (tracked_.empty() || now - last_check_ < kCheckPeriod) return;
+  if (now - last_check_ < kCheckPeriod) return;
   last_check_ = now;
-  const std::vector<std::string> robots = sim_.robotNames();
-  const size_t before = tracked_.size();
-  for (auto it = tracked_.begin(); it != tracked_.end();) {
-    it = std::find(robots.begin(), robots.end(), *it) == robots.end() ? tracked_.erase(it) : ++it;
-  }
-  const std::vector<bullet_sim::MarkerShape> moving = trackedMarkers();
-  if (!changes_.update(moving).empty() || tracked_.size() != before) publish(moving);
+  if (const auto all = markers_.update(sim_)) publish(*all);
 }
 
-void WorldMarkersIo::publish(const std::vector<bullet_sim::MarkerShape>& moving) {
+void WorldMarkersIo::publish(const std::vector<bullet_sim::MarkerShape>& markers) {
   visualization_msgs::MarkerArray array;
   // The array is always complete: clear what a listener drew before (a deleted model's
   // markers with it), then draw everything again.
@@ -88,8 +65,7 @@ void WorldMarkersIo::publish(const std::vector<bullet_sim::MarkerShape>& moving)
   clear.header.frame_id = "world";
   clear.action = visualization_msgs::Marker::DELETEALL;
   array.markers.push_back(clear);
-  for (const auto& shape : static_markers_) array.markers.push_back(toMarkerMsg(shape));
-  for (const auto& shape : moving) array.markers.push_back(toMarkerMsg(shape));
+  for (const auto& shape : markers) array.markers.push_back(toMarkerMsg(shape));
   pub_.publish(array);
 }
 

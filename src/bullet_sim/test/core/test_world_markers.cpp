@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "bullet_sim/simulation.h"
+#include "bullet_sim/world_marker_set.h"
 #include "bullet_sim/world_markers.h"
 #include "burger.h"
 #include "round_track.h"
@@ -192,4 +194,77 @@ TEST(WorldMarkers, ChangesReportNewMovedAndRecolouredMarkersOnly) {
   b.rgba[0] = 0.1f;
   ASSERT_EQ(changes.update({a, b}).size(), 1u);
   EXPECT_TRUE(changes.update({a, b}).empty());
+}
+
+namespace {
+
+const char* kCrate = R"(<robot name="crate">
+  <link name="body">
+    <visual><geometry><box size="0.2 0.2 0.1"/></geometry></visual>
+    <collision><geometry><box size="0.2 0.2 0.1"/></geometry></collision>
+    <inertial><mass value="1"/><inertia ixx="0.004" ixy="0" ixz="0" iyy="0.004" iyz="0" izz="0.007"/></inertial>
+  </link>
+</robot>)";
+
+const MarkerShape* crateMarker(const std::vector<MarkerShape>& markers) {
+  return find(markers, "crate", 0);
+}
+
+}  // namespace
+
+TEST(WorldMarkerSet, RepublishesWhenATrackedModelMoves) {
+  const WorldSpec world = bullet_sim_test::flatWorld();
+  Simulation sim(world, SimConfig{});
+  Pose3 start;
+  start.position = {0, 0, 0.5};
+  sim.spawnRobot("crate", parseRobot(kCrate, "crate"), start);
+  WorldMarkerSet set(world);
+  set.track("crate");
+
+  auto first = set.update(sim);
+  ASSERT_TRUE(first.has_value());
+  ASSERT_EQ(first->size(), world.shapes.size() + 1);
+  ASSERT_NE(crateMarker(*first), nullptr);
+  EXPECT_NEAR(crateMarker(*first)->pose.position.z(), 0.5, 1e-9);
+  EXPECT_FALSE(set.update(sim).has_value());  // nothing moved
+
+  // Falling: after 0.2 s the crate is 0.5 g t^2 = 0.196 m lower, and redrawn there.
+  for (int i = 0; i < 200; ++i) sim.step();
+  auto falling = set.update(sim);
+  ASSERT_TRUE(falling.has_value());
+  EXPECT_NEAR(crateMarker(*falling)->pose.position.z(), 0.5 - 0.5 * 9.8 * 0.2 * 0.2, 0.01);
+
+  // At rest on the ground (centre at half its height), it is not sent again.
+  for (int i = 0; i < 2000; ++i) sim.step();
+  auto resting = set.update(sim);
+  if (resting) {
+    EXPECT_NEAR(crateMarker(*resting)->pose.position.z(), 0.05, 0.005);
+  }
+  for (int i = 0; i < 100; ++i) sim.step();
+  EXPECT_FALSE(set.update(sim).has_value());
+
+  Pose3 moved;
+  moved.position = {1, 2, 0.05};
+  sim.setModelState("crate", moved, Twist3{});
+  auto teleported = set.update(sim);
+  ASSERT_TRUE(teleported.has_value());
+  EXPECT_LT((crateMarker(*teleported)->pose.position - moved.position).norm(), 1e-6);
+
+  // A deleted model's markers go with the next set.
+  sim.deleteRobot("crate");
+  auto without = set.update(sim);
+  ASSERT_TRUE(without.has_value());
+  EXPECT_EQ(without->size(), world.shapes.size());
+  EXPECT_EQ(crateMarker(*without), nullptr);
+}
+
+TEST(WorldMarkerSet, WithoutTrackedModelsTheWorldIsSentOnce) {
+  const WorldSpec world = bullet_sim_test::flatWorld();
+  Simulation sim(world, SimConfig{});
+  WorldMarkerSet set(world);
+  auto first = set.update(sim);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->size(), world.shapes.size());
+  sim.step();
+  EXPECT_FALSE(set.update(sim).has_value());
 }
