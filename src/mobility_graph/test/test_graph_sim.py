@@ -13,7 +13,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from svg_graph import read_svg_graph  # noqa: E402
 from system_wait import wait_for_connections  # noqa: E402
 
-SIM = '/bullet_sim'
+SIM = '/gazebo'  # bullet_sim_node, started by gazebo_ros's gzserver as node gazebo
 RSP = '/robot_state_publisher'
 
 
