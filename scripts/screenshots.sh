@@ -17,11 +17,17 @@ tests=(
   "turtlebot3_description test/display_rviz.test"
   "xqrobot_description test/display_rviz.test"
   "turtlebot3_gazebo test/roundTrack_rviz.test"
+  "turtlebot3_gazebo test/roundTrack_rviz_tf.test"
+  "turtlebot3_gazebo test/roundTrack_rviz_panel.test"
+  "mobility_graph test/graph_figure.test"
 )
 for entry in "${tests[@]}"; do
   read -r package test_file <<<"$entry"
   echo "screenshots: $package $test_file"
-  xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tcp" \
-    rostest "$package" "$(basename "$test_file")" >/dev/null
+  # A failing check still leaves its picture; say so instead of stopping.
+  if ! xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tcp" \
+      rostest "$package" "$(basename "$test_file")" >/dev/null; then
+    echo "screenshots: $package $test_file: some checks failed (rostest $package $(basename "$test_file"))"
+  fi
 done
 ls -1 "$SCREENSHOT_DIR"

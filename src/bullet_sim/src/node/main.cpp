@@ -9,6 +9,7 @@
 #include "physics_services.h"
 #include "sim_runner.h"
 #include "status_reporter.h"
+#include "world_markers_io.h"
 
 #include <bullet_sim/errors.h>
 #include <bullet_sim/robot_spec.h>
@@ -54,6 +55,8 @@ int run(const Config& config, ros::NodeHandle& nh) {
   bullet_sim_node::ModelServices model_services(runner, gazebo_nh);
   bullet_sim_node::LinkJointServices link_joint_services(runner, gazebo_nh);
   bullet_sim_node::StatusReporter status(sim, config.status_period_s);
+  bullet_sim_node::WorldMarkersIo world_markers(sim, gazebo_nh);
+  for (const bullet_sim::WorldModel& model : world.models) world_markers.track(model.name);
   const std::string robot = config.robot_name.empty() ? "no robot" : "robot " + config.robot_name;
   ROS_INFO("world %s (%s), %s, physics step %g s, real-time factor %g%s", world.name.c_str(),
            config.world_file.c_str(), robot.c_str(), sim_config.physics_step_s, config.real_time_factor,
@@ -72,6 +75,7 @@ int run(const Config& config, ros::NodeHandle& nh) {
       pacer.waitUntil(sim.timeS());
     }
     status.maybeReport();
+    world_markers.update();
   }
   return 0;
 }

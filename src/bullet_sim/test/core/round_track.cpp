@@ -7,12 +7,8 @@
 namespace bullet_sim_test {
 namespace {
 
-struct Wall {
-  double x, y, yaw, length;
-};
-
 // DESIGN.md, "World roundTrack": centre x, y, yaw, length (m).
-constexpr Wall kWalls[] = {
+const std::vector<Wall> kWalls = {
     {1.53496, 2.894504, 0.736056, 1.0}, {2.04294, 2.386858, 0.881268, 0.5},
     {3.72582, 2.23758, 1.57177, 3.0},   {0.196982, 3.258921, 1.57467, 2.0},
     {5.21431, 0.73692, -0.000378, 3.0}, {3.8664, -2.46629, -1.1525, 0.5},
@@ -24,7 +20,6 @@ constexpr Wall kWalls[] = {
     {2.78265, 1.19568, 1.57177, 2.4},   {3.98336, 0.09495, -0.000378, 2.2},
     {1.89949, -1.53786, 1.5735, 2.7},   {3.43608, -1.41841, 2.08925, 0.5},
     {3.79555, -1.15857, -0.858577, 0.5}};
-constexpr double kThicknessM = 0.015;
 
 /// Slab test of a ray against an axis-aligned rectangle centred at 0.
 double rayRectangle(const Eigen::Vector2d& o, const Eigen::Vector2d& d, double half_x,
@@ -49,6 +44,8 @@ double rayRectangle(const Eigen::Vector2d& o, const Eigen::Vector2d& d, double h
 
 }  // namespace
 
+const std::vector<Wall>& roundTrackWalls() { return kWalls; }
+
 double wallDistance(const Eigen::Vector2d& origin, double heading_rad, double max_range_m) {
   const Eigen::Vector2d dir(std::cos(heading_rad), std::sin(heading_rad));
   double best = std::numeric_limits<double>::infinity();
@@ -58,7 +55,7 @@ double wallDistance(const Eigen::Vector2d& origin, double heading_rad, double ma
     const Eigen::Vector2d rel = origin - Eigen::Vector2d(w.x, w.y);
     const Eigen::Vector2d o(c * rel.x() + s * rel.y(), -s * rel.x() + c * rel.y());
     const Eigen::Vector2d d(c * dir.x() + s * dir.y(), -s * dir.x() + c * dir.y());
-    best = std::min(best, rayRectangle(o, d, kThicknessM / 2, w.length / 2));
+    best = std::min(best, rayRectangle(o, d, kWallThicknessM / 2, w.length / 2));
   }
   return best <= max_range_m ? best : std::numeric_limits<double>::infinity();
 }

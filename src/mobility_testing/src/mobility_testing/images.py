@@ -63,3 +63,15 @@ def save_png(image, path):
     if not cv2.imwrite(path, cv2.cvtColor(np.ascontiguousarray(image), cv2.COLOR_RGB2BGR)):
         raise ValueError(f'{path}: could not be written')
     return path
+
+
+def shade_mask(image, rgb, ratio_tolerance=0.08, min_level=20):
+    """Pixels that are `rgb` under some amount of light: a lit 3D view scales a surface's
+    colour by its shading, so green/red and blue/red keep the colour's ratios. rgb may be
+    0..1 floats (a material's diffuse colour); its red must be its largest channel."""
+    r, g, b = (image[..., i].astype(np.float64) for i in range(3))
+    ref = np.asarray(rgb, dtype=np.float64)
+    red = np.maximum(r, 1.0)
+    return ((r >= min_level)
+            & (np.abs(g / red - ref[1] / ref[0]) <= ratio_tolerance)
+            & (np.abs(b / red - ref[2] / ref[0]) <= ratio_tolerance))

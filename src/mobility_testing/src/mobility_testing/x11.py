@@ -2,6 +2,7 @@
 
 Every function uses the X server named by $DISPLAY (under `make test`, one Xvfb)."""
 import os
+import re
 import subprocess
 
 from mobility_testing.images import load_png
@@ -96,3 +97,21 @@ def screenshot(window, path):
 def screenshot_array(window, path):
     """Screenshot of a window as an (H, W, 3) uint8 array; the PNG is kept at path."""
     return load_png(screenshot(window, path))
+
+
+def render_areas(window):
+    """(x, y, width, height) on the screen of the windows that a renderer created inside
+    `window` (RViz's Ogre views: unnamed X windows of another client), largest first.
+    RViz's main 3D view is the first; an Image display adds a smaller one."""
+    out = subprocess.run(['xwininfo', '-tree', '-id', str(window)], capture_output=True,
+                         text=True, timeout=20, check=True).stdout
+    # e.g. "0x600004 (has no name): ()  820x755+0+0  +364+62" (size, then absolute corner)
+    child = re.compile(r'^0x[0-9a-f]+ \(has no name\): \(\)\s+(\d+)x(\d+)[-+]\d+[-+]\d+'
+                       r'\s+\+(-?\d+)\+(-?\d+)$')
+    areas = []
+    for line in out.splitlines():
+        match = child.match(line.strip())
+        if match:
+            width, height, x, y = (int(v) for v in match.groups())
+            areas.append((x, y, width, height))
+    return sorted(areas, key=lambda a: a[2] * a[3], reverse=True)

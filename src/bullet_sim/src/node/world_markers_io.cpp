@@ -1,0 +1,76 @@
+#include "world_markers_io.h"
+
+#include "conversions.h"
+
+#include <visualization_msgs/MarkerArray.h>
+
+namespace bullet_sim_node {
+namespace {
+
+// A moving model is redrawn this often at most: smooth enough to follow in RViz, and the
+// check costs nothing noticeable when the simulation runs many times real time.
+constexpr std::chrono::milliseconds kCheckPeriod{200};
+// Motions smaller than these do not resend the array.
+constexpr double kPositionToleranceM = 0.001;
+constexpr double kAngleToleranceRad = 0.002;
+
+visualization_msgs::Marker toMarkerMsg(const bullet_sim::MarkerShape& shape) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = "world";
+  // Stamp 0: RViz uses the newest transform, so a static marker never waits for tf history.
+  m.header.stamp = ros::Time(0);
+  m.ns = shape.ns;
+  m.id = shape.id;
+  switch (shape.type) {
+    case bullet_sim::MarkerShape::Cube: m.type = visualization_msgs::Marker::CUBE; break;
+    case bullet_sim::MarkerShape::Cylinder: m.type = visualization_msgs::Marker::CYLINDER; break;
+    case bullet_sim::MarkerShape::Sphere: m.type = visualization_msgs::Marker::SPHERE; break;
+    case bullet_sim::MarkerShape::Mesh:
+      m.type = visualization_msgs::Marker::MESH_RESOURCE;
+      m.mesh_resource = shape.mesh_resource;
+      break;
+  }
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose = toMsg(shape.pose);
+  m.scale.x = shape.scale_m.x();
+  m.scale.y = shape.scale_m.y();
+  m.scale.z = shape.scale_m.z();
+  m.color.r = shape.rgba[0];
+  m.color.g = shape.rgba[1];
+  m.color.b = shape.rgba[2];
+  m.color.a = shape.rgba[3];
+  m.frame_locked = false;
+  return m;
+}
+
+}  // namespace
+
+WorldMarkersIo::WorldMarkersIo(const bullet_sim::Simulation& sim, const ros::NodeHandle& nh)
+    : sim_(sim),
+      markers_(sim.world(), kPositionToleranceM, kAngleToleranceRad),
+      last_check_(std::chrono::steady_clock::now()) {
+  ros::NodeHandle handle(nh);
+  pub_ = handle.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
+  if (const auto all = markers_.update(sim_)) publish(*all);
+}
+
+void WorldMarkersIo::update() {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_check_ < kCheckPeriod) return;
+  last_check_ = now;
+  if (const auto all = markers_.update(sim_)) publish(*all);
+}
+
+void WorldMarkersIo::publish(const std::vector<bullet_sim::MarkerShape>& markers) {
+  visualization_msgs::MarkerArray array;
+  // The array is always complete: clear what a listener drew before (a deleted model's
+  // markers with it), then draw everything again.
+  visualization_msgs::Marker clear;
+  clear.header.frame_id = "world";
+  clear.action = visualization_msgs::Marker::DELETEALL;
+  array.markers.push_back(clear);
+  for (const auto& shape : markers) array.markers.push_back(toMarkerMsg(shape));
+  pub_.publish(array);
+}
+
+}  // namespace bullet_sim_node
