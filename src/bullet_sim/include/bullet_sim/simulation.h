@@ -22,6 +22,9 @@ namespace bullet_sim {
 struct SimConfig {
   double physics_step_s = 0.001;
   uint64_t seed = 1;  ///< every sensor's noise is seeded from (seed, robot, sensor)
+  /// A robot whose last setCmdVel is older than this (sim seconds) is given a zero command;
+  /// 0 = never (Gazebo's diff drive keeps the last command forever).
+  double cmd_vel_timeout_s = 0;
 };
 
 enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates };

@@ -99,8 +99,14 @@ std::vector<DueSensor> Simulation::step() {
   const double dt = impl_->cfg.physics_step_s;
   const uint64_t k = impl_->steps + 1;
   std::vector<DueSensor> due;
+  const double timeout_s = impl_->cfg.cmd_vel_timeout_s;
   for (auto& entry : impl_->robots) {
     Impl::Robot& r = *entry.second;
+    if (r.drive && r.command_active && timeout_s > 0 &&
+        timeS() - r.last_command_s >= timeout_s) {
+      r.drive->setCommand(0, 0);
+      r.command_active = false;
+    }
     if (r.drive && r.schedule.driveDue(k, dt)) {
       r.drive->updateMotors(r.physics.get(), impl_->timeAtStep(k - 1), dt);
     }
@@ -144,7 +150,10 @@ void Simulation::reset() {
 
 void Simulation::setCmdVel(const std::string& robot, double linear_mps, double angular_radps) {
   Impl::Robot& r = impl_->robot(robot);
-  if (r.drive) r.drive->setCommand(linear_mps, angular_radps);
+  if (!r.drive) return;
+  r.drive->setCommand(linear_mps, angular_radps);
+  r.last_command_s = timeS();
+  r.command_active = linear_mps != 0 || angular_radps != 0;
 }
 
 Pose3 Simulation::modelPose(const std::string& robot) const {

@@ -30,6 +30,8 @@ struct Simulation::Impl {
     Eigen::Isometry3d T_world_spawn;
     std::unique_ptr<PhysicsRobot> physics;
     std::optional<DiffDriveController> drive;
+    double last_command_s = 0;   ///< sim time of the last setCmdVel
+    bool command_active = false; ///< a non-zero command the timeout may stop
     std::vector<std::mt19937_64> ray_rngs, imu_rngs;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;

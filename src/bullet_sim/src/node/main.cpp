@@ -44,6 +44,7 @@ int run(const Config& config, ros::NodeHandle& nh) {
   sim_config.physics_step_s =
       config.physics_step_s > 0 ? config.physics_step_s : world.max_step_size_s;
   sim_config.seed = static_cast<uint64_t>(config.seed);
+  sim_config.cmd_vel_timeout_s = config.cmd_vel_timeout_s;
   bullet_sim::Simulation sim(world, sim_config);
   const ros::NodeHandle gazebo_nh("/gazebo");
   bullet_sim_node::SimRunner runner(sim, nh, gazebo_nh, config.start_paused,

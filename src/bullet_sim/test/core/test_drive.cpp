@@ -225,3 +225,26 @@ TEST(Joints, RevoluteLimitHoldsAFallingArmAndPrismaticIsHeldFixedWithAWarning) {
   // The arm's mass sits on +y: gravity turns it about +x down to the lower limit.
   EXPECT_NEAR(jointPosition(js, "shoulder"), -0.5, 0.03);
 }
+
+TEST(CommandTimeout, ARobotWhoseCommandsStopIsStoppedAndFreshCommandsKeepItGoing) {
+  SimConfig cfg;
+  cfg.cmd_vel_timeout_s = 0.5;
+  Simulation sim(bullet_sim_test::flatWorld(), cfg);
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  run(&sim, 1.0);  // settle
+  const double start_x = sim.modelPose("burger").position.x();
+  // One command of 0.2 m/s: about 0.5 s of driving (0.2 s up and down the Burger's 1 m/s^2
+  // ramps), 0.1 m in all, then it stands still.
+  sim.setCmdVel("burger", 0.2, 0);
+  run(&sim, 2.5);
+  const double stopped_x = sim.modelPose("burger").position.x();
+  EXPECT_NEAR(stopped_x - start_x, 0.1, 0.03);
+  run(&sim, 0.5);
+  EXPECT_LT(std::fabs(sim.modelPose("burger").position.x() - stopped_x), 0.001);
+  // Commands every 0.25 s (inside the timeout) keep it going: 2 s at 0.2 m/s.
+  for (int i = 0; i < 8; ++i) {
+    sim.setCmdVel("burger", 0.2, 0);
+    run(&sim, 0.25);
+  }
+  EXPECT_GT(sim.modelPose("burger").position.x() - stopped_x, 0.35);
+}
