@@ -117,7 +117,8 @@ class ExtensionReader {
       spec_->imus.push_back(imu);
     } else if (type == "camera") {
       if (file != "libgazebo_ros_camera.so") return noPlugin(type, name, link, file);
-      spec_->cameras.push_back(readCamera(s, plugin, link, name, where, "image_raw", "camera_info"));
+      spec_->cameras.push_back(
+          readCamera(s, plugin, link, name, where, "image_raw", "camera_info"));
     } else if (type == "depth") {
       if (file != kKinectPlugin && file != kDepthCameraPlugin) {
         return noPlugin(type, name, link, file);

@@ -131,7 +131,8 @@ int expectDepthsMatch(const Frame& frame, double far_m, double cutoff_m, double 
     for (int u = 0; u < kWidth; ++u) {
       const double expected = expectedDepth(u, v, far_m, cutoff_m, cutoff_max_m);
       const double got = frame.depth.depth_m[v * kWidth + u];
-      const bool ok = std::isnan(expected) ? std::isnan(got) : std::abs(got - expected) < kToleranceM;
+      const bool ok =
+          std::isnan(expected) ? std::isnan(got) : std::abs(got - expected) < kToleranceM;
       if (!ok && ++mismatches <= 5) {
         ADD_FAILURE() << "pixel (" << u << ", " << v << "): depth " << got << ", expected "
                       << expected;
@@ -198,7 +199,9 @@ TEST(DepthCamera, PointsAreDepthTimesInverseKAndLieOnTheSurfaceHit) {
       // Optical frame (x right, y down, z ahead) to the world: ahead is +x, right is -y.
       const Vector3d world = kCamera + Vector3d(xyz[2], -xyz[0], -xyz[1]);
       if (std::abs(world.x() - 3.0) < kToleranceM) ++on_wall;
-      for (int c = 0; c < 3; ++c) EXPECT_EQ(cloud.data[i * 32 + 16 + c], frame.image.data[3 * i + c]);
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(cloud.data[i * 32 + 16 + c], frame.image.data[3 * i + c]);
+      }
     }
   }
   EXPECT_GT(on_wall, kWidth * kHeight / 5);  // the wall's near face is the plane x = 3
@@ -219,7 +222,8 @@ TEST(DepthCamera, ARenderWithDepthOfAPlainCameraIsRefused) {
     renderer.render("bot", 0, &image, &depth);
     FAIL() << "rendered depth for a plain camera";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "camera 'kinect' on link 'camera_link' of robot 'bot' is not a depth camera");
+    EXPECT_STREQ(e.what(),
+                 "camera 'kinect' on link 'camera_link' of robot 'bot' is not a depth camera");
   }
 }
 

@@ -84,7 +84,8 @@ TEST(DepthSpec, TheKinectPluginsParametersAreRead) {
 }
 
 TEST(DepthSpec, TheKinectPluginsDefaultsAreGazebos) {
-  const RobotSpec spec = parseRobot(withoutPluginParameters("libgazebo_ros_openni_kinect.so"), kSource);
+  const RobotSpec spec =
+      parseRobot(withoutPluginParameters("libgazebo_ros_openni_kinect.so"), kSource);
   const CameraSpec& c = spec.cameras.at(0);
   EXPECT_EQ(c.camera_name, "camera");
   EXPECT_EQ(c.image_topic, "ir/image_raw");
@@ -99,7 +100,8 @@ TEST(DepthSpec, TheKinectPluginsDefaultsAreGazebos) {
 }
 
 TEST(DepthSpec, TheDepthCameraPluginHasNoUpperCutoff) {
-  const RobotSpec spec = parseRobot(withoutPluginParameters("libgazebo_ros_depth_camera.so"), kSource);
+  const RobotSpec spec =
+      parseRobot(withoutPluginParameters("libgazebo_ros_depth_camera.so"), kSource);
   const CameraSpec& c = spec.cameras.at(0);
   EXPECT_EQ(c.depth->plugin, "libgazebo_ros_depth_camera.so");
   EXPECT_EQ(c.image_topic, "ir/image_raw");
@@ -149,7 +151,8 @@ TEST(DepthSpec, EveryBadValueIsALoadErrorNamingSensorElementAndValue) {
        cw + " <image> <format>: 'RGBA_INT8' is not R8G8B8, B8G8R8 or L8"},
       {"<near>0.05<", "<near>0<", cw + " <clip> <near>: '0' must be > 0"},
       {"<far>8.0<", "<far>0.01<", cw + " <clip> <far>: '0.01' must be finite and above <near>"},
-      {"<updateRate>10<", "<updateRate>fast<", kWhere + " <plugin> <updateRate>: 'fast' is not a number"},
+      {"<updateRate>10<", "<updateRate>fast<",
+       kWhere + " <plugin> <updateRate>: 'fast' is not a number"},
   };
   for (const BadValue& c : cases) {
     EXPECT_EQ(loadErrorOf(fixtureWith(c.from, c.to)), c.message) << c.to;
