@@ -1,7 +1,9 @@
 // Camera cost inside the simulation: the round-track scenario at 1 kHz physics, driving a
 // slow weave, run twice on one core: once without the camera, once rendering every camera
 // frame when it falls due (the Burger's: 640 x 480 at 30 Hz). Prints the per-frame render
-// time (median, 95th percentile, max) and both real-time factors.
+// time (median, 95th percentile, max) and both real-time factors. A depth camera's frame
+// is timed with its depth image and point cloud (both made each frame, as for a subscriber
+// to each).
 //
 // Usage: bullet_sim_camera_bench <robot.urdf> <world.sdf> [sim_seconds]
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "bullet_sim/camera_renderer.h"
+#include "bullet_sim/depth_camera.h"
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 
@@ -36,6 +39,8 @@ Run runScenario(const bullet_sim::WorldSpec& world, const bullet_sim::RobotSpec&
   sim.spawnRobot("robot", robot, spawn);
   bullet_sim::CameraRenderer renderer(sim);
   bullet_sim::ImageData image;
+  bullet_sim::DepthImageData depth;
+  bullet_sim::PointCloudData cloud;
   Run run;
   const Clock::time_point start = Clock::now();
   while (sim.timeS() < sim_seconds) {
@@ -43,7 +48,9 @@ Run runScenario(const bullet_sim::WorldSpec& world, const bullet_sim::RobotSpec&
     for (const bullet_sim::DueSensor& due : sim.step()) {
       if (!render || due.kind != bullet_sim::SensorKind::Camera) continue;
       const Clock::time_point frame_start = Clock::now();
-      renderer.render(due.robot, due.index, &image);
+      const bullet_sim::CameraSpec& camera = robot.cameras[due.index];
+      renderer.render(due.robot, due.index, &image, camera.depth ? &depth : nullptr);
+      if (camera.depth) bullet_sim::makePointCloud(camera, depth, image, &cloud);
       run.frame_ms.push_back(1e3 * secondsSince(frame_start));
     }
   }
@@ -74,7 +81,8 @@ int main(int argc, char** argv) {
     const Run with_camera = runScenario(world, robot, sim_seconds, true);
     const std::vector<double>& ms = with_camera.frame_ms;
     if (ms.empty()) throw bullet_sim::LoadError("the camera was never due");
-    std::printf("camera '%s': %d x %d %s at %g Hz, %zu frames in %.1f s sim\n",
+    std::printf("%s '%s': %d x %d %s at %g Hz, %zu frames in %.1f s sim\n",
+                camera.depth ? "depth camera (frame + depth + cloud)" : "camera",
                 camera.name.c_str(), camera.width, camera.height, camera.format.c_str(),
                 camera.update_rate_hz, ms.size(), with_camera.sim_s);
     std::printf("frame render: median %.3f ms, p95 %.3f ms, max %.3f ms\n", percentile(ms, 0.5),

@@ -113,4 +113,13 @@ double Renderer::depthAt(int col, int row) const {
   return inverse_depth > 0.0f ? 1.0 / inverse_depth : std::numeric_limits<double>::infinity();
 }
 
+void Renderer::depthImage(std::vector<float>* depth_m) const {
+  depth_m->resize(inverse_depth_.size());
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t i = 0; i < inverse_depth_.size(); ++i) {
+    const float inverse_depth = inverse_depth_[i];
+    (*depth_m)[i] = inverse_depth > 0.0f ? static_cast<float>(1.0 / inverse_depth) : nan;
+  }
+}
+
 }  // namespace sim_render

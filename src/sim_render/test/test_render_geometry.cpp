@@ -134,6 +134,26 @@ TEST(Render, GroundDepthIsPerspectiveCorrectAndFarClipped) {
   EXPECT_EQ(pixel(image, 640, 320, 241), (Rgb{0, 255, 0}));
 }
 
+TEST(Render, DepthImageIsTheGroundsDepthPerRowAndNaNWhereTheSkyIs) {
+  Scene scene;
+  scene.add(ShapeSpec::plane(0, 0, kGreen), Eigen::Isometry3d::Identity());
+  const double height_m = 0.3;
+  Renderer renderer(squareCamera(100.0));
+  std::vector<std::uint8_t> image;
+  renderer.render(scene, cameraAt(Eigen::Vector3d(0, 0, height_m)), image);
+  std::vector<float> depth;
+  renderer.depthImage(&depth);
+  ASSERT_EQ(depth.size(), 640u * 480u);
+  for (int row : {0, 120, 240}) EXPECT_TRUE(std::isnan(depth[row * 640 + 17])) << "row " << row;
+  // Row v sees the ground at depth h * fy / (v - cy), the same in every column.
+  for (int row : {241, 300, 479}) {
+    const double expected = height_m * 320.0 / (row - 240.0);
+    for (int col : {0, 320, 639}) {
+      EXPECT_NEAR(depth[row * 640 + col], expected, 1e-4 * expected) << col << ", " << row;
+    }
+  }
+}
+
 TEST(Render, WallFacingTheLightShowsColourTimesAmbientPlusDiffuse) {
   Scene scene;
   scene.lighting().ambient = Eigen::Vector3f(0.3f, 0.3f, 0.3f);

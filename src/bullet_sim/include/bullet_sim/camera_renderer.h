@@ -13,6 +13,8 @@
 
 namespace bullet_sim {
 
+struct DepthImageData;
+
 /// One camera image, laid out as sensor_msgs/Image.
 struct ImageData {
   double time_s = 0;
@@ -65,10 +67,13 @@ class CameraRenderer {
   CameraRenderer& operator=(const CameraRenderer&) = delete;
 
   /// Renders camera `index` of `robot` as the simulation stands now into `image`, whose
-  /// buffer is reused from frame to frame.
+  /// buffer is reused from frame to frame. With `depth` (a depth camera), the same pass's
+  /// depth buffer becomes the depth image, its cutoffs applied (see depth_camera.h).
   /// @throws std::out_of_range for an unknown robot or camera index, LoadError for a
-  /// camera validateCamera() rejects.
-  void render(const std::string& robot, size_t index, ImageData* image);
+  /// camera validateCamera() rejects, std::invalid_argument for `depth` with a camera
+  /// that is not a depth camera.
+  void render(const std::string& robot, size_t index, ImageData* image,
+              DepthImageData* depth = nullptr);
 
   /// Visuals that could not be drawn (bad sizes), one message each; meshes that could not
   /// be read are in the robot's and the world's spec warnings instead.

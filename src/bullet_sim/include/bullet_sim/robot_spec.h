@@ -36,7 +36,21 @@ struct ImuSpec {
   double update_rate_hz = 0, gaussian_noise = 0;
 };
 
-/// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin.
+/// The depth part of a <sensor type="depth"> with libgazebo_ros_openni_kinect.so or
+/// libgazebo_ros_depth_camera.so: topics under the camera's <cameraName>, and the range
+/// (cutoff_m, cutoff_max_m), both exclusive, outside which depth and points are NaN.
+struct DepthSpec {
+  std::string plugin;  ///< the plugin's file name, as written
+  std::string depth_image_topic = "depth/image_raw", depth_info_topic = "depth/camera_info",
+              point_cloud_topic = "points";
+  double cutoff_m = 0.4;
+  /// <pointCloudCutoffMax> (openni_kinect only; the depth_camera plugin has no upper cutoff)
+  double cutoff_max_m = 5.0;
+};
+
+/// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin, or a
+/// <sensor type="depth">, whose colour image and camera_info are those of a camera (under
+/// Gazebo's depth plugins' defaults ir/image_raw and ir/camera_info) and `depth` the rest.
 struct CameraSpec {
   std::string name, link, camera_name = "camera", image_topic = "image_raw",
                           info_topic = "camera_info", frame_id;
@@ -44,6 +58,7 @@ struct CameraSpec {
   double update_rate_hz = 0, horizontal_fov_rad = 1.047, clip_near_m = 0.1, clip_far_m = 100;
   int width = 320, height = 240;
   std::string format = "R8G8B8";
+  std::optional<DepthSpec> depth;  ///< set for a depth camera
 };
 
 /// Where the diff drive's odometry comes from (<odometrySource>).

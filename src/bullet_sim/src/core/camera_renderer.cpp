@@ -8,6 +8,7 @@
 
 #include <sim_render/renderer.h>
 
+#include "bullet_sim/depth_camera.h"
 #include "bullet_sim/errors.h"
 
 namespace bullet_sim {
@@ -255,13 +256,18 @@ CameraRenderer::~CameraRenderer() = default;
 
 const std::vector<std::string>& CameraRenderer::warnings() const { return impl_->warnings; }
 
-void CameraRenderer::render(const std::string& robot, size_t index, ImageData* image) {
+void CameraRenderer::render(const std::string& robot, size_t index, ImageData* image,
+                            DepthImageData* depth) {
   const RobotSpec& spec = impl_->sim.robotSpec(robot);
   if (index >= spec.cameras.size()) {
     throw std::out_of_range("robot '" + robot + "' has no camera " + std::to_string(index) +
                             " (it has " + std::to_string(spec.cameras.size()) + ")");
   }
   const CameraSpec& camera = spec.cameras[index];
+  if (depth && !camera.depth) {
+    throw std::invalid_argument(cameraName(camera) + " of robot '" + robot +
+                                "' is not a depth camera");
+  }
   impl_->syncRobots();
   Impl::RobotScene& scene_robot = impl_->robots.at(robot);
   std::unique_ptr<sim_render::Renderer>& renderer = scene_robot.renderers[index];
@@ -280,12 +286,20 @@ void CameraRenderer::render(const std::string& robot, size_t index, ImageData* i
   image->width = camera.width;
   image->height = camera.height;
   image->encoding = imageEncoding(camera);
-  if (image->encoding == "rgb8") {
-    renderer->render(impl_->scene, T_world_camera, image->data);
+  const bool rgb8 = image->encoding == "rgb8";
+  renderer->render(impl_->scene, T_world_camera, rgb8 ? image->data : impl_->rgb);
+  if (depth) {
+    depth->time_s = image->time_s;
+    depth->frame_id = camera.frame_id;
+    depth->width = camera.width;
+    depth->height = camera.height;
+    renderer->depthImage(&depth->depth_m);
+    applyDepthCutoffs(*camera.depth, &depth->depth_m);
+  }
+  if (rgb8) {
     image->step = 3 * camera.width;
     return;
   }
-  renderer->render(impl_->scene, T_world_camera, impl_->rgb);
   if (image->encoding == "mono8") {
     toMono(impl_->rgb, &image->data);
     image->step = camera.width;

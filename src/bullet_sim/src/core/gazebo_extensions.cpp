@@ -1,6 +1,8 @@
 #include "gazebo_extensions.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,9 @@ namespace bullet_sim {
 namespace {
 
 using tinyxml2::XMLElement;
+
+constexpr const char* kKinectPlugin = "libgazebo_ros_openni_kinect.so";
+constexpr const char* kDepthCameraPlugin = "libgazebo_ros_depth_camera.so";
 
 std::string attr(const XMLElement* e, const char* name) {
   const char* v = e->Attribute(name);
@@ -112,7 +117,13 @@ class ExtensionReader {
       spec_->imus.push_back(imu);
     } else if (type == "camera") {
       if (file != "libgazebo_ros_camera.so") return noPlugin(type, name, link, file);
-      readCamera(s, plugin, link, name, where);
+      spec_->cameras.push_back(
+          readCamera(s, plugin, link, name, where, "image_raw", "camera_info"));
+    } else if (type == "depth") {
+      if (file != kKinectPlugin && file != kDepthCameraPlugin) {
+        return noPlugin(type, name, link, file);
+      }
+      readDepthCamera(s, plugin, link, name, where);
     } else {
       spec_->warnings.push_back("sensor type '" + type + "' (sensor '" + name + "' on link '" +
                                 link + "') is not supported: ignored");
@@ -166,8 +177,10 @@ class ExtensionReader {
     spec_->rays.push_back(r);
   }
 
-  void readCamera(const XMLElement* s, const XMLElement* plugin, const std::string& link,
-                  const std::string& name, const std::string& where) {
+  /// The camera part of a camera or depth sensor; the topics default to the plugin's.
+  CameraSpec readCamera(const XMLElement* s, const XMLElement* plugin, const std::string& link,
+                        const std::string& name, const std::string& where,
+                        const std::string& image_topic, const std::string& info_topic) {
     CameraSpec c;
     c.name = name;
     c.link = link;
@@ -189,12 +202,84 @@ class ExtensionReader {
     if (c.width < 1 || c.height < 1) xml_.fail(cw + " <image>", "width and height must be >= 1");
     const std::string pw = where + " <plugin>";
     c.camera_name = xml_.text(plugin, "cameraName", c.camera_name);
-    c.image_topic = xml_.text(plugin, "imageTopicName", c.image_topic);
-    c.info_topic = xml_.text(plugin, "cameraInfoTopicName", c.info_topic);
+    c.image_topic = xml_.text(plugin, "imageTopicName", image_topic);
+    c.info_topic = xml_.text(plugin, "cameraInfoTopicName", info_topic);
     c.frame_id = xml_.text(plugin, "frameName", link);
     const double plugin_rate = xml_.number(plugin, "updateRate", 0, pw);
     if (plugin_rate > 0) c.update_rate_hz = plugin_rate;
+    return c;
+  }
+
+  /// Gazebo's depth plugins publish the colour image as a camera does (under ir/ unless
+  /// told otherwise), plus depth image, its camera_info and the point cloud.
+  void readDepthCamera(const XMLElement* s, const XMLElement* plugin, const std::string& link,
+                       const std::string& name, const std::string& where) {
+    checkDepthCamera(s, where);
+    CameraSpec c = readCamera(s, plugin, link, name, where, "ir/image_raw", "ir/camera_info");
+    DepthSpec d;
+    d.plugin = attr(plugin, "filename");
+    const std::string pw = where + " <plugin filename=\"" + d.plugin + "\">";
+    d.depth_image_topic = xml_.text(plugin, "depthImageTopicName", d.depth_image_topic);
+    d.depth_info_topic = xml_.text(plugin, "depthImageCameraInfoTopicName", d.depth_info_topic);
+    d.point_cloud_topic = xml_.text(plugin, "pointCloudTopicName", d.point_cloud_topic);
+    d.cutoff_m = xml_.number(plugin, "pointCloudCutoff", d.cutoff_m, pw);
+    if (d.plugin == kKinectPlugin) {
+      d.cutoff_max_m = xml_.number(plugin, "pointCloudCutoffMax", d.cutoff_max_m, pw);
+    } else {
+      d.cutoff_max_m = std::numeric_limits<double>::infinity();
+      if (plugin->FirstChildElement("pointCloudCutoffMax")) {
+        spec_->warnings.push_back(pw + " <pointCloudCutoffMax>: not a parameter of " +
+                                  d.plugin + " (it has no upper cutoff): ignored");
+      }
+    }
+    if (!(d.cutoff_m >= 0 && std::isfinite(d.cutoff_m))) {
+      xml_.fail(pw + " <pointCloudCutoff>",
+                "'" + xml_.text(plugin, "pointCloudCutoff", "") + "' must be >= 0");
+    }
+    if (!(d.cutoff_max_m > d.cutoff_m)) {
+      xml_.fail(pw + " <pointCloudCutoffMax>", "'" + xml_.text(plugin, "pointCloudCutoffMax", "") +
+                                                   "' must be above <pointCloudCutoff> " +
+                                                   std::to_string(d.cutoff_m));
+    }
+    c.depth = d;
     spec_->cameras.push_back(c);
+  }
+
+  /// A depth camera's <camera> values that no renderer can use are load errors (a plain
+  /// camera's are reported by the node, which then leaves that camera out).
+  void checkDepthCamera(const XMLElement* s, const std::string& where) {
+    const XMLElement* cam = s->FirstChildElement("camera");
+    if (!cam) xml_.fail(where, "needs a <camera> element");
+    const std::string cw = where + " <camera>";
+    const double fov = xml_.number(cam, "horizontal_fov", 1.047, cw);
+    if (!(fov > 0 && fov < M_PI)) {
+      xml_.fail(cw + " <horizontal_fov>",
+                "'" + xml_.text(cam, "horizontal_fov", "") + "' must be in (0, pi) radians");
+    }
+    if (const XMLElement* image = cam->FirstChildElement("image")) {
+      for (const char* dim : {"width", "height"}) {
+        const double v = xml_.number(image, dim, 1, cw + " <image>");
+        if (!(v >= 1 && v <= 16384 && v == std::floor(v))) {
+          xml_.fail(cw + " <image> <" + dim + ">",
+                    "'" + xml_.text(image, dim, "") + "' is not a pixel count in 1..16384");
+        }
+      }
+      const std::string format = xml_.text(image, "format", "R8G8B8");
+      if (format != "R8G8B8" && format != "B8G8R8" && format != "L8") {
+        xml_.fail(cw + " <image> <format>", "'" + format + "' is not R8G8B8, B8G8R8 or L8");
+      }
+    }
+    if (const XMLElement* clip = cam->FirstChildElement("clip")) {
+      const double near = xml_.number(clip, "near", 0.1, cw + " <clip>");
+      const double far = xml_.number(clip, "far", 100, cw + " <clip>");
+      if (!(near > 0 && std::isfinite(near))) {
+        xml_.fail(cw + " <clip> <near>", "'" + xml_.text(clip, "near", "") + "' must be > 0");
+      }
+      if (!(far > near && std::isfinite(far))) {
+        xml_.fail(cw + " <clip> <far>", "'" + xml_.text(clip, "far", "") +
+                                            "' must be finite and above <near>");
+      }
+    }
   }
 
   void readModelPlugin(const XMLElement* p) {

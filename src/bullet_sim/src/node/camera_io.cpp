@@ -21,10 +21,6 @@ namespace {
 constexpr uint32_t kImageQueueSize = 5;
 constexpr uint32_t kInfoQueueSize = 50;
 
-std::string join(const std::string& ns, const std::string& name) {
-  return ns.empty() ? name : ns + "/" + name;
-}
-
 sensor_msgs::ImagePtr toMsg(bullet_sim::ImageData* image) {
   auto msg = boost::make_shared<sensor_msgs::Image>();
   msg->header.stamp.fromSec(image->time_s);
@@ -38,10 +34,17 @@ sensor_msgs::ImagePtr toMsg(bullet_sim::ImageData* image) {
   return msg;
 }
 
-sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info) {
+}  // namespace
+
+std::string cameraTopic(const std::string& camera_name, const std::string& topic) {
+  return camera_name.empty() ? topic : camera_name + "/" + topic;
+}
+
+sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
+                                 const std::string& frame_id) {
   auto msg = boost::make_shared<sensor_msgs::CameraInfo>();
   msg->header.stamp.fromSec(info.time_s);
-  msg->header.frame_id = info.frame_id;
+  msg->header.frame_id = frame_id;
   msg->width = static_cast<uint32_t>(info.width);
   msg->height = static_cast<uint32_t>(info.height);
   msg->distortion_model = info.distortion_model;
@@ -51,8 +54,6 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info) {
   std::copy(info.P.begin(), info.P.end(), msg->P.begin());
   return msg;
 }
-
-}  // namespace
 
 CameraIo::CameraIo(const bullet_sim::Simulation& sim) : sim_(sim), renderer_(sim) {
   logNewRendererWarnings();
@@ -73,13 +74,19 @@ void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_n
       continue;
     }
     topics.back().image = nh.advertise<sensor_msgs::Image>(
-        join(camera.camera_name, camera.image_topic), kImageQueueSize);
+        cameraTopic(camera.camera_name, camera.image_topic), kImageQueueSize);
     topics.back().info = nh.advertise<sensor_msgs::CameraInfo>(
-        join(camera.camera_name, camera.info_topic), kInfoQueueSize);
+        cameraTopic(camera.camera_name, camera.info_topic), kInfoQueueSize);
+    if (camera.depth) {
+      depth_.addCamera(robot, topics.size() - 1, camera, nh, topics.back().frame_id);
+    }
   }
 }
 
-void CameraIo::removeRobot(const std::string& robot) { cameras_.erase(robot); }
+void CameraIo::removeRobot(const std::string& robot) {
+  cameras_.erase(robot);
+  depth_.removeRobot(robot);
+}
 
 void CameraIo::publish(const bullet_sim::DueSensor& due) {
   const auto robot = cameras_.find(due.robot);
@@ -87,17 +94,23 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
   Topics& topics = robot->second[due.index];
   const bool image_wanted = topics.image && topics.image.getNumSubscribers() > 0;
   const bool info_wanted = topics.info && topics.info.getNumSubscribers() > 0;
-  if (!image_wanted && !info_wanted) return;
+  const bool depth_wanted = depth_.depthWanted(due.robot, due.index);
+  if (!image_wanted && !info_wanted && !depth_wanted && !depth_.infoWanted(due.robot, due.index)) {
+    return;
+  }
   const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
   if (info_wanted) {
-    sensor_msgs::CameraInfoPtr info = toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()));
-    info->header.frame_id = topics.frame_id;
-    topics.info.publish(info);
+    topics.info.publish(toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
   }
-  if (!image_wanted) return;
+  depth_.publishInfo(due.robot, due.index, camera, sim_.timeS());
+  if (!image_wanted && !depth_wanted) return;
   try {
     bullet_sim::ImageData frame;
-    renderer_.render(due.robot, due.index, &frame);
+    bullet_sim::DepthImageData depth;
+    renderer_.render(due.robot, due.index, &frame, depth_wanted ? &depth : nullptr);
+    // The cloud takes its colours from the frame before the image message takes its bytes.
+    if (depth_wanted) depth_.publish(due.robot, due.index, camera, &depth, frame);
+    if (!image_wanted) return;
     sensor_msgs::ImagePtr image = toMsg(&frame);
     image->header.frame_id = topics.frame_id;
     topics.image.publish(image);

@@ -4,8 +4,11 @@
 #include <bullet_sim/camera_renderer.h>
 #include <bullet_sim/simulation.h>
 
+#include "depth_camera_io.h"
+
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
+#include <sensor_msgs/CameraInfo.h>
 
 #include <map>
 #include <string>
@@ -13,12 +16,19 @@
 
 namespace bullet_sim_node {
 
+/// `topic` under the camera's <cameraName> namespace, as Gazebo's camera plugins put it.
+std::string cameraTopic(const std::string& camera_name, const std::string& topic);
+/// The camera_info message of `info`, with `frame_id` (tf_prefix applied).
+sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
+                                 const std::string& frame_id);
+
 /// Publishes `<cameraName>/<imageTopicName>` (sensor_msgs/Image) and
 /// `<cameraName>/<cameraInfoTopicName>` (sensor_msgs/CameraInfo) for each camera of each
 /// robot when the simulation says it is due, stamped with sim time. A frame is rendered
 /// only while someone subscribes to the image, camera_info is filled only while someone
 /// subscribes to it: cameras nobody watches cost nothing. One renderer (one scene with
-/// every robot) serves all cameras.
+/// every robot) serves all cameras. A depth camera's frame is rendered once for its
+/// colour image and its depth topics (DepthCameraIo) alike.
 class CameraIo {
  public:
   /// `sim` must outlive this object.
@@ -46,6 +56,7 @@ class CameraIo {
 
   const bullet_sim::Simulation& sim_;
   bullet_sim::CameraRenderer renderer_;
+  DepthCameraIo depth_;  ///< the depth topics of the depth cameras among them
   std::map<std::string, std::vector<Topics>> cameras_;  ///< per robot, by camera index
   size_t warnings_logged_ = 0;
 };

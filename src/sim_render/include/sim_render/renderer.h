@@ -39,6 +39,11 @@ class Renderer {
   /// +infinity where nothing was drawn or out of the image.
   double depthAt(int col, int row) const;
 
+  /// Depth along the camera's +x axis (the optical axis) of every pixel of the last frame,
+  /// in metres, row-major, row 0 on top: the frame's depth buffer, no extra pass. NaN where
+  /// nothing was drawn (nothing within the far clip distance). Resizes `depth_m`.
+  void depthImage(std::vector<float>* depth_m) const;
+
   const RenderStats& lastStats() const { return stats_; }
 
  private:
