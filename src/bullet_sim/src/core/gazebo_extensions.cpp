@@ -1,4 +1,5 @@
 #include "gazebo_extensions.h"
+#include "plugin_parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -98,6 +99,7 @@ class ExtensionReader {
     if (link.empty()) xml_.fail(where, "a sensor needs a <gazebo reference=\"link\">");
     const XMLElement* plugin = s->FirstChildElement("plugin");
     const std::string file = plugin ? attr(plugin, "filename") : "";
+    warnUnknownPluginParameters(plugin, file, where + " <plugin>", &spec_->warnings);
     if (type == "ray" || type == "gpu_ray") {
       if (file != "libgazebo_ros_laser.so" && file != "libgazebo_ros_gpu_laser.so") {
         return noPlugin(type, name, link, file);
@@ -117,6 +119,7 @@ class ExtensionReader {
       spec_->imus.push_back(imu);
     } else if (type == "camera") {
       if (file != "libgazebo_ros_camera.so") return noPlugin(type, name, link, file);
+      checkCameraValues(s, where);
       spec_->cameras.push_back(
           readCamera(s, plugin, link, name, where, "image_raw", "camera_info"));
     } else if (type == "depth") {
@@ -214,7 +217,7 @@ class ExtensionReader {
   /// told otherwise), plus depth image, its camera_info and the point cloud.
   void readDepthCamera(const XMLElement* s, const XMLElement* plugin, const std::string& link,
                        const std::string& name, const std::string& where) {
-    checkDepthCamera(s, where);
+    checkCameraValues(s, where);
     CameraSpec c = readCamera(s, plugin, link, name, where, "ir/image_raw", "ir/camera_info");
     DepthSpec d;
     d.plugin = attr(plugin, "filename");
@@ -245,9 +248,8 @@ class ExtensionReader {
     spec_->cameras.push_back(c);
   }
 
-  /// A depth camera's <camera> values that no renderer can use are load errors (a plain
-  /// camera's are reported by the node, which then leaves that camera out).
-  void checkDepthCamera(const XMLElement* s, const std::string& where) {
+  /// A camera's <camera> values that no renderer can use are load errors.
+  void checkCameraValues(const XMLElement* s, const std::string& where) {
     const XMLElement* cam = s->FirstChildElement("camera");
     if (!cam) xml_.fail(where, "needs a <camera> element");
     const std::string cw = where + " <camera>";
@@ -285,6 +287,7 @@ class ExtensionReader {
   void readModelPlugin(const XMLElement* p) {
     const std::string file = attr(p, "filename");
     const std::string where = "<plugin name=\"" + attr(p, "name") + "\" filename=\"" + file + "\">";
+    warnUnknownPluginParameters(p, file, where, &spec_->warnings);
     if (file == "libgazebo_ros_diff_drive.so") {
       readDiffDrive(p, where);
     } else if (file == "libgazebo_ros_imu.so") {

@@ -124,6 +124,35 @@ TEST(RobotLoader, MalformedGazeboValueNamesElementAndValue) {
   EXPECT_NE(error.find("<wheelSeparation>: 'wide' is not a number"), std::string::npos) << error;
 }
 
+TEST(RobotLoader, MisspelledPluginParameterIsNamedWithTheNearestKnownOne) {
+  std::string urdf = bullet_sim_test::burgerUrdf();
+  const std::string from = "<wheelSeparation>0.160</wheelSeparation>";
+  urdf.replace(urdf.find(from), from.size(), "<wheelSeperation>0.160</wheelSeperation>");
+  const RobotSpec spec = parseRobot(urdf, "robot_description");
+  EXPECT_TRUE(hasWarningWith(spec, "<wheelSeperation>: libgazebo_ros_diff_drive.so has no such "
+                               "parameter (did you mean <wheelSeparation>?): ignored"));
+  // The Burger as written has no unknown parameter.
+  for (const std::string& w : bullet_sim_test::burgerSpec().warnings)
+    EXPECT_EQ(w.find("no such parameter"), std::string::npos) << w;
+}
+
+TEST(RobotLoader, CameraThatCannotBeRenderedIsALoadError) {
+  const std::string fov = "<horizontal_fov>1.5707</horizontal_fov>";
+  std::string zero_fov = bullet_sim_test::burgerUrdf();
+  ASSERT_NE(zero_fov.find(fov), std::string::npos);
+  zero_fov.replace(zero_fov.find(fov), fov.size(), "<horizontal_fov>0</horizontal_fov>");
+  EXPECT_NE(loadErrorOf([&] { parseRobot(zero_fov, "robot_description"); })
+                .find("<camera> <horizontal_fov>: '0' must be in (0, pi) radians"),
+            std::string::npos);
+  const std::string format = "<format>R8G8B8</format>";
+  std::string bad_format = bullet_sim_test::burgerUrdf();
+  ASSERT_NE(bad_format.find(format), std::string::npos);
+  bad_format.replace(bad_format.find(format), format.size(), "<format>YUV422</format>");
+  EXPECT_NE(loadErrorOf([&] { parseRobot(bad_format, "robot_description"); })
+                .find("<image> <format>: 'YUV422' is not R8G8B8, B8G8R8 or L8"),
+            std::string::npos);
+}
+
 TEST(RobotLoader, MissingRobotFileIsNamed) {
   const std::string path = fixture("no_such.urdf");
   const std::string error = loadErrorOf([&] { parseRobotFile(path); });
