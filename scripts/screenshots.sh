@@ -19,6 +19,7 @@ tests=(
   "turtlebot3_gazebo test/roundTrack_rviz.test"
   "turtlebot3_gazebo test/roundTrack_rviz_tf.test"
   "turtlebot3_gazebo test/roundTrack_rviz_panel.test"
+  "turtlebot3_gazebo test/roundTrack_obstacles_rviz.test"
   "mobility_graph test/graph_figure.test"
 )
 for entry in "${tests[@]}"; do

@@ -138,8 +138,9 @@ void SimulationPanel::updateModels(const std::vector<std::string>& models) {
   const QSignalBlocker block(model_);
   model_->clear();
   model_->addItems(names);
-  // Keep the user's choice; without one, the first model.
-  model_->setCurrentText(chosen.isEmpty() && !names.isEmpty() ? names.front() : chosen);
+  // Keep the user's choice; without one, the last model: the simulator lists the world's
+  // models first and spawned robots after them, newest last.
+  model_->setCurrentText(chosen.isEmpty() && !names.isEmpty() ? names.back() : chosen);
   client_->selectModel(model_->currentText().toStdString());
 }
 

@@ -60,6 +60,7 @@ class Simulation {
   /// @throws LoadError on a name clash, a diff drive naming a missing joint, ...
   void spawnRobot(const std::string& name, const RobotSpec& spec, const Pose3& pose);
   bool deleteRobot(const std::string& name);
+  /// Every model simulated as a robot (the world's movable models first), in spawn order.
   std::vector<std::string> robotNames() const;
   const RobotSpec& robotSpec(const std::string& name) const;
 

@@ -86,8 +86,11 @@ bool Simulation::deleteRobot(const std::string& name) {
 }
 
 std::vector<std::string> Simulation::robotNames() const {
+  std::vector<std::pair<int, std::string>> by_spawn;
+  for (const auto& r : impl_->robots) by_spawn.emplace_back(r.second->id, r.first);
+  std::sort(by_spawn.begin(), by_spawn.end());
   std::vector<std::string> names;
-  for (const auto& r : impl_->robots) names.push_back(r.first);
+  for (const auto& entry : by_spawn) names.push_back(entry.second);
   return names;
 }
 

@@ -212,9 +212,11 @@ void ModelServices::onSetState(const gazebo_msgs::ModelState::ConstPtr& state) {
 bool ModelServices::getWorld(gazebo_msgs::GetWorldProperties::Request&,
                              gazebo_msgs::GetWorldProperties::Response& res) {
   res.sim_time = runner_.sim().timeS();
-  res.model_names = runner_.sim().robotNames();
+  // As Gazebo lists them: the world file's models, then the spawned ones in spawn order.
   for (const bullet_sim::StaticModel& model : runner_.sim().world().static_models)
     res.model_names.push_back(model.name);
+  const std::vector<std::string> moving = runner_.sim().robotNames();
+  res.model_names.insert(res.model_names.end(), moving.begin(), moving.end());
   res.rendering_enabled = true;
   res.success = true;
   res.status_message = "GetWorldProperties: got properties";
