@@ -99,14 +99,19 @@ class ExtensionReader {
     if (link.empty()) xml_.fail(where, "a sensor needs a <gazebo reference=\"link\">");
     const XMLElement* plugin = s->FirstChildElement("plugin");
     const std::string file = plugin ? attr(plugin, "filename") : "";
-    warnUnknownPluginParameters(plugin, file, where + " <plugin>", &spec_->warnings);
+    // Only a plugin that this sensor uses is checked: a left-out one is warned about whole.
+    const auto checkParameters = [&] {
+      warnUnknownPluginParameters(plugin, file, where + " <plugin>", &spec_->warnings);
+    };
     if (type == "ray" || type == "gpu_ray") {
       if (file != "libgazebo_ros_laser.so" && file != "libgazebo_ros_gpu_laser.so") {
         return noPlugin(type, name, link, file);
       }
+      checkParameters();
       readRay(s, plugin, link, name, where);
     } else if (type == "imu") {
       if (file != "libgazebo_ros_imu_sensor.so") return noPlugin(type, name, link, file);
+      checkParameters();
       ImuSpec imu;
       imu.name = name;
       imu.link = link;
@@ -119,6 +124,7 @@ class ExtensionReader {
       spec_->imus.push_back(imu);
     } else if (type == "camera") {
       if (file != "libgazebo_ros_camera.so") return noPlugin(type, name, link, file);
+      checkParameters();
       checkCameraValues(s, where);
       spec_->cameras.push_back(
           readCamera(s, plugin, link, name, where, "image_raw", "camera_info"));
@@ -126,6 +132,7 @@ class ExtensionReader {
       if (file != kKinectPlugin && file != kDepthCameraPlugin) {
         return noPlugin(type, name, link, file);
       }
+      checkParameters();
       readDepthCamera(s, plugin, link, name, where);
     } else {
       spec_->warnings.push_back("sensor type '" + type + "' (sensor '" + name + "' on link '" +

@@ -7,23 +7,14 @@
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 #include "burger.h"
+#include "load_errors.h"
 
 using namespace bullet_sim;
 
+using bullet_sim_test::fixture;
+using bullet_sim_test::loadErrorOf;
+
 namespace {
-
-std::string fixture(const std::string& name) { return std::string(BULLET_SIM_FIXTURES) + "/" + name; }
-
-/// Runs `load` and returns the LoadError's message ("" when nothing is thrown).
-template <typename F>
-std::string loadErrorOf(F load) {
-  try {
-    load();
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 bool hasWarningWith(const RobotSpec& spec, const std::string& text) {
   for (const std::string& w : spec.warnings) {

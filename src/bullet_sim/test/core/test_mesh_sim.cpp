@@ -10,10 +10,13 @@
 #include "bullet_sim/simulation.h"
 #include "burger.h"
 #include "mesh_fixtures.h"
+#include "load_errors.h"
 
 using namespace bullet_sim;
 using bullet_sim_test::boxTriangles;
 using Eigen::Vector3d;
+
+using bullet_sim_test::loadErrorOf;
 
 namespace {
 
@@ -21,16 +24,6 @@ constexpr double kDt = 0.001;
 
 void run(Simulation* sim, double seconds) {
   for (long i = 0; i < std::lround(seconds / kDt); ++i) sim->step();
-}
-
-template <typename F>
-std::string loadErrorOf(F load) {
-  try {
-    load();
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {

@@ -11,23 +11,15 @@
 #include "bullet_sim/world_spec.h"
 #include "burger.h"
 #include "temp_dir.h"
+#include "load_errors.h"
 
 using namespace bullet_sim;
 using bullet_sim_test::TempDir;
 
+using bullet_sim_test::fixture;
+using bullet_sim_test::loadErrorOf;
+
 namespace {
-
-std::string fixture(const std::string& name) { return std::string(BULLET_SIM_FIXTURES) + "/" + name; }
-
-template <typename F>
-std::string loadErrorOf(F load) {
-  try {
-    load();
-  } catch (const LoadError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 const UriResolver kNoPaths{ResourcePaths{}};
 
