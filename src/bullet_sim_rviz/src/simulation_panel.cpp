@@ -124,6 +124,7 @@ void SimulationPanel::onStep() {
 void SimulationPanel::onSetFactor() { client_->setRealTimeFactor(target_rtf_->value(), report()); }
 
 void SimulationPanel::onModelChosen(const QString& model) {
+  user_chose_model_ = true;  // signals are blocked while the panel itself sets the choice
   client_->selectModel(model.toStdString());
   Q_EMIT configChanged();
 }
@@ -139,8 +140,10 @@ void SimulationPanel::updateModels(const std::vector<std::string>& models) {
   model_->clear();
   model_->addItems(names);
   // Keep the user's choice; without one, the last model: the simulator lists the world's
-  // models first and spawned robots after them, newest last.
-  model_->setCurrentText(chosen.isEmpty() && !names.isEmpty() ? names.back() : chosen);
+  // models first and spawned robots after them, newest last (a robot spawned later takes
+  // over an automatic choice).
+  const bool keep = user_chose_model_ && !chosen.isEmpty();
+  model_->setCurrentText(keep || names.isEmpty() ? chosen : names.back());
   client_->selectModel(model_->currentText().toStdString());
 }
 
@@ -181,7 +184,10 @@ void SimulationPanel::load(const rviz::Config& config) {
   int steps = 1;
   if (config.mapGetInt("Step Count", &steps)) step_count_->setValue(steps);
   QString model;
-  if (config.mapGetString("Robot", &model) && !model.isEmpty()) model_->setCurrentText(model);
+  if (config.mapGetString("Robot", &model) && !model.isEmpty()) {
+    model_->setCurrentText(model);
+    user_chose_model_ = true;
+  }
 }
 
 void SimulationPanel::save(rviz::Config config) const {

@@ -59,6 +59,7 @@ class SimulationPanel : public rviz::Panel {
   QDoubleSpinBox* target_rtf_;
   QPushButton* set_rtf_;
   QComboBox* model_;
+  bool user_chose_model_ = false;  ///< typed or picked by the user (or the saved config)
   QLabel* result_;
   QTimer* timer_;
   bool target_rtf_shown_ = false;
