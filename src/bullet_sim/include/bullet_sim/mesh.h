@@ -64,7 +64,10 @@ class MeshCache {
   size_t file_reads_ = 0;
 };
 
-/// Reads one mesh file without any cache. @throws LoadError as MeshCache::load.
+/// Reads one mesh file without any cache, with assimp in a child process: assimp crashes on
+/// some damaged files, and that must not end the simulator.
+/// @throws LoadError as MeshCache::load, or "<path>: cannot read mesh: assimp crashed
+/// reading it (<signal>)".
 TriangleMesh readMeshFile(const std::string& path);
 
 /// Resolves `uri` (relative ones from `base_dir`) and loads it through MeshCache::shared().

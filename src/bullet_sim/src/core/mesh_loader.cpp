@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "bullet_sim/errors.h"
+#include "mesh_import.h"
 
 namespace bullet_sim {
 namespace {
@@ -136,7 +137,7 @@ size_t TriangleMesh::vertexCount() const {
   return n;
 }
 
-TriangleMesh readMeshFile(const std::string& path) {
+TriangleMesh importMeshFile(const std::string& path) {
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);

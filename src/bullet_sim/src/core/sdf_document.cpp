@@ -1,7 +1,9 @@
 #include "sdf_document.h"
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
+#include <regex>
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
@@ -13,6 +15,24 @@ namespace bullet_sim {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// libsdformat hands <sdf version> to ignition::math::SemanticVersion, which throws
+/// std::invalid_argument or std::out_of_range from std::stoi for anything that is not
+/// numbers separated by dots ("1.;", "1.99999999999"), so the version is checked first.
+void checkSdfVersion(const tinyxml2::XMLDocument& doc, const std::string& source,
+                     const std::string& kind) {
+  const tinyxml2::XMLElement* sdf = doc.FirstChildElement("sdf");
+  const char* version = sdf ? sdf->Attribute("version") : nullptr;
+  static const std::regex kVersion("[0-9]{1,6}(\\.[0-9]{1,6}){0,2}");
+  if (version && !std::regex_match(version, kVersion)) {
+    throw LoadError(source + ": invalid SDF " + kind + ": <sdf version=\"" + version +
+                    "\">: not a version number such as \"1.6\"");
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<tinyxml2::XMLDocument> parseSdfXml(const std::string& text,
                                                    const std::string& source,
                                                    const std::string& kind) {
@@ -20,6 +40,7 @@ std::unique_ptr<tinyxml2::XMLDocument> parseSdfXml(const std::string& text,
   if (doc->Parse(text.c_str(), text.size()) != tinyxml2::XML_SUCCESS) {
     throw LoadError(source + ": invalid SDF " + kind + ": malformed XML: " + doc->ErrorStr());
   }
+  checkSdfVersion(*doc, source, kind);
   return doc;
 }
 
@@ -30,8 +51,16 @@ std::unique_ptr<sdf::Root> loadSdfRoot(const std::string& text, const std::strin
   IncludeResolver includes(resolver, path.empty() ? "" : fs::path(path).parent_path().string());
   auto root = std::make_unique<sdf::Root>();
   // Loading by path lets libsdformat record each element's file (for relative mesh URIs).
-  sdf::Errors errors = path.empty() ? root->LoadSdfString(text, includes.parserConfig())
-                                    : root->Load(path, includes.parserConfig());
+  sdf::Errors errors;
+  try {
+    errors = path.empty() ? root->LoadSdfString(text, includes.parserConfig())
+                          : root->Load(path, includes.parserConfig());
+  } catch (const std::exception& e) {
+    // The same std::stoi throws for an included model file's <sdf version>, which
+    // checkSdfVersion does not see.
+    throw LoadError(source + ": invalid SDF " + kind + ": libsdformat threw '" + e.what() +
+                    "' reading it or its includes");
+  }
   // Worlds saved by Gazebo give static links mass 0 and nan moments; Gazebo loads them, and
   // a static link's inertia is never used. Movable links are checked where they are built.
   const auto inertia = std::stable_partition(errors.begin(), errors.end(), [](const sdf::Error& e) {

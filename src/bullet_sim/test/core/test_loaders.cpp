@@ -204,6 +204,13 @@ TEST(WorldLoader, MalformedXmlNamesPathAndParserMessage) {
   EXPECT_NE(error.find("Line number=5"), std::string::npos) << error;
 }
 
+TEST(WorldLoader, SdfVersionThatIsNotANumberNamesPathAndValue) {
+  const std::string path = fixture("world_bad_sdf_version.world");
+  EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path); }),
+            path + ": invalid SDF world: <sdf version=\"1.;\">: not a version number such as "
+                   "\"1.6\"");
+}
+
 TEST(WorldLoader, UnsupportedGeometryNamesFileModelLinkAndType) {
   const std::string path = fixture("world_heightmap.world");
   EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path); }),

@@ -162,6 +162,36 @@ TEST_F(MeshFiles, EmptyAndMissingFilesAreNamed) {
   EXPECT_EQ(missing.rfind(file("missing.dae") + ": cannot read mesh: ", 0), 0u) << missing;
 }
 
+// Found by fuzz_mesh: assimp 5.2 crashes on these files (a failed assertion, a null
+// pointer); readMeshFile reads in a child process, so they are load errors naming the file.
+TEST(MeshCrashes, ColladaTrianglesWithoutIndicesCrashAssimpNotTheLoader) {
+  const std::string path =
+      std::string(BULLET_SIM_FIXTURES) + "/mesh_collada_triangles_without_p.dae";
+  EXPECT_EQ(loadErrorOf(path), path + ": cannot read mesh: assimp crashed reading it (Aborted)");
+}
+
+TEST(MeshCrashes, ColladaEmptyFloatArrayCrashesAssimpNotTheLoader) {
+  const std::string path =
+      std::string(BULLET_SIM_FIXTURES) + "/mesh_collada_empty_float_array.dae";
+  EXPECT_EQ(loadErrorOf(path),
+            path + ": cannot read mesh: assimp crashed reading it (Segmentation fault)");
+}
+
+TEST(MeshCrashes, ATriangleReadInTheChildProcessArrivesWhole) {
+  // The wire format carries vertices, triangles and the file's colour (a red lambert,
+  // millimetres, Y up: the corner (1000, 0, 0) mm is (1, 0, 0) m, (0, 1000, 0) is (0, 0, 1)).
+  const TriangleMesh mesh =
+      readMeshFile(std::string(BULLET_SIM_FIXTURES) + "/mesh_red_triangle.dae");
+  ASSERT_EQ(mesh.parts.size(), 1u);
+  const MeshPart& part = mesh.parts[0];
+  ASSERT_EQ(part.triangles.size(), 1u);
+  ASSERT_TRUE(part.rgba.has_value());
+  EXPECT_TRUE(part.rgba->isApprox(Eigen::Vector4f(1, 0, 0, 1)));
+  EXPECT_TRUE(near(part.vertices[part.triangles[0][0]], Vector3d(0, 0, 0)));
+  EXPECT_TRUE(near(part.vertices[part.triangles[0][1]], Vector3d(1, 0, 0)));
+  EXPECT_TRUE(near(part.vertices[part.triangles[0][2]], Vector3d(0, 0, 1)));
+}
+
 TEST_F(MeshFiles, ColladaWithoutTrianglesIsAnError) {
   bullet_sim_test::writeCollada(file("nothing.dae"), {}, 1.0, "Z_UP",
                                 Eigen::Vector4f(1, 1, 1, 1));

@@ -239,6 +239,19 @@ TEST(WorldIncludes, ModelConfigNamingMissingFile) {
                 ", which does not exist");
 }
 
+TEST(WorldIncludes, IncludedModelFileWithBadSdfVersion) {
+  TempDir dir;
+  writeModel(dir, "crate", "<sdf version=\"1.6\">model.sdf</sdf>");
+  dir.write("models/crate/model.sdf", boxModelSdf("1.x", "crate", 0.4, "Gazebo/Red"));
+  const std::string error = loadErrorOf([&] {
+    loadWorldString("<sdf version='1.6'><world name='w'><include><uri>model://crate</uri>"
+                    "</include></world></sdf>",
+                    "w.world", UriResolver(ResourcePaths{{dir.sub("models")}, {}}));
+  });
+  EXPECT_EQ(error,
+            "w.world: invalid SDF world: libsdformat threw 'stoi' reading it or its includes");
+}
+
 // -------------------------------------------------------------- materials ----
 
 TEST(WorldMaterials, ScriptNamesGiveGazebosColoursAndDiffuseWins) {
