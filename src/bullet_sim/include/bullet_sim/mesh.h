@@ -66,8 +66,9 @@ class MeshCache {
 
 /// Reads one mesh file without any cache, with assimp in a child process: assimp crashes on
 /// some damaged files, and that must not end the simulator.
-/// @throws LoadError as MeshCache::load, or "<path>: cannot read mesh: assimp crashed
-/// reading it (<signal>)".
+/// @throws LoadError as MeshCache::load, "<path>: cannot read mesh: assimp crashed
+/// reading it (<signal>)", or "... assimp did not finish reading it in 60 s" (the child is
+/// killed).
 TriangleMesh readMeshFile(const std::string& path);
 
 /// Resolves `uri` (relative ones from `base_dir`) and loads it through MeshCache::shared().

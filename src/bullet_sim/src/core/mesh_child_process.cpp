@@ -3,11 +3,13 @@
 // <p>, a <float_array count="0"> read through its accessor); in the simulator's process
 // that would end the node. The child reads the file and sends the triangles back; a child
 // that dies becomes a LoadError.
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <array>
 #include <cstring>
 #include <string>
@@ -23,6 +25,8 @@ namespace {
 // the part count and each part: vertex count, vertices (3 doubles), triangle count,
 // triangles (3 uint32), a byte for "has colour", the colour (4 floats). Counts are uint64.
 constexpr char kOk = 0;
+// Far beyond any real mesh (a 100 MB STL reads in about a second here).
+constexpr double kReadTimeoutS = 60;
 constexpr char kLoadError = 1;
 
 template <typename T>
@@ -110,14 +114,25 @@ void writeAll(int fd, const std::string& data) {
   _exit(0);
 }
 
-std::string readAll(int fd) {
-  std::string data;
+/// Everything the child writes until it closes the pipe; false when `timeout_s` of wall
+/// time passes first (a file assimp loops on, or a child stuck on a lock another thread of
+/// the parent held at the fork).
+bool readAll(int fd, double timeout_s, std::string* data) {
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   char buffer[65536];
   for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
+    pollfd ready{fd, POLLIN, 0};
+    const int polled = poll(&ready, 1, static_cast<int>(left.count()));
+    if (polled < 0 && errno == EINTR) continue;
+    if (polled <= 0) return false;
     const ssize_t n = read(fd, buffer, sizeof(buffer));
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return data;
-    data.append(buffer, static_cast<size_t>(n));
+    if (n <= 0) return true;
+    data->append(buffer, static_cast<size_t>(n));
   }
 }
 
@@ -137,8 +152,16 @@ TriangleMesh readMeshFile(const std::string& path) {
     childMain(fds[1], path);
   }
   close(fds[1]);
-  const std::string answer = readAll(fds[0]);
+  std::string answer;
+  const bool finished = readAll(fds[0], kReadTimeoutS, &answer);
   close(fds[0]);
+  if (!finished) {
+    kill(child, SIGKILL);
+    while (waitpid(child, nullptr, 0) < 0 && errno == EINTR) {
+    }
+    throw LoadError(path + ": cannot read mesh: assimp did not finish reading it in " +
+                    std::to_string(static_cast<int>(kReadTimeoutS)) + " s");
+  }
   int status = 0;
   while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
