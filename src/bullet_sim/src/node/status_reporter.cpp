@@ -13,6 +13,9 @@ double yawRad(const Eigen::Quaterniond& q) {
                     1.0 - 2.0 * (q.y() * q.y() + q.z() * q.z()));
 }
 
+/// A value as printed with 3 decimals, without a "-0.000" for a tiny negative one.
+double shown(double value) { return std::fabs(value) < 0.0005 ? 0.0 : value; }
+
 }  // namespace
 
 std::string statusLine(const bullet_sim::Simulation& sim, double real_time_factor,
@@ -27,8 +30,8 @@ std::string statusLine(const bullet_sim::Simulation& sim, double real_time_facto
   for (const std::string& robot : sim.robotNames()) {
     const bullet_sim::Pose3 pose = sim.modelPose(robot);
     line.precision(3);
-    line << ", " << robot << " at x " << pose.position.x() << " y " << pose.position.y()
-         << " yaw " << yawRad(pose.orientation);
+    line << ", " << robot << " at x " << shown(pose.position.x()) << " y "
+         << shown(pose.position.y()) << " yaw " << shown(yawRad(pose.orientation));
     const bullet_sim::ModelCondition condition = sim.condition(robot);
     if (condition.tippedOver()) {
       line.precision(0);
