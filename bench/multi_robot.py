@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """N Burgers on the round track in one bullet_sim_node, every topic of every robot subscribed
-(bench/multi_listener.cpp), each driving the command's circle in its own part of the track
+(bullet_sim's bench_rate_listener), each driving the command's circle in its own part of the track
 (scenario.circle_starts), as fast as possible. The first robot comes from robot_description
 at the spawn pose; robots 2..N are added through /gazebo/spawn_urdf_model
 (gazebo_msgs/SpawnModel) under the namespaces tb3_2..tb3_N. Checks that every robot drives at
@@ -116,7 +116,7 @@ def main():
                                 env=env, stdout=subprocess.PIPE, universal_newlines=True,
                                 timeout=900)
         if result.returncode != 0:
-            sys.exit("multi_listener failed (exit %d)" % result.returncode)
+            sys.exit("bench_rate_listener failed (exit %d)" % result.returncode)
         try:
             check_driving(count)
         except scenario.SanityError as error:

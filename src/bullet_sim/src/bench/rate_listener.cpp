@@ -1,8 +1,10 @@
-// bench_rate_listener: the subscriber side of bench/sim_rtf.sh. Subscribes to every topic
-// of the simulated Burger (the simulator starts paused), unpauses the simulation once all
-// subscriptions are connected, counts the messages stamped inside a window of sim time
-// and prints each topic's rate in sim time and the window's real-time factor (last line).
-// Usage: bench_rate_listener WARMUP_SIM_S MEASURE_SIM_S
+// bench_rate_listener: the subscriber side of bench/sim_rtf.sh and bench/multi_robot.py.
+// Subscribes to odom, scan, imu and joint_states of every robot namespace given (the root
+// when none is), and to /tf and /clock (the simulator starts paused); once every
+// subscription is connected it unpauses the simulation, counts the messages stamped inside
+// a window of sim time and prints each topic's rate in sim time, then the window's
+// real-time factor as the last line.
+// Usage: bench_rate_listener WARMUP_SIM_S MEASURE_SIM_S [NAMESPACE...]   ("/" for the root)
 #include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
@@ -53,16 +55,39 @@ template <class Msg>
 ros::Subscriber countHeader(ros::NodeHandle& nh, const std::string& topic, Window& window) {
   window.counts[topic] = 0;
   const boost::function<void(const typename Msg::ConstPtr&)> callback =
-      [&window, topic](const typename Msg::ConstPtr& msg) { window.count(topic, msg->header.stamp); };
+      [&window, topic](const typename Msg::ConstPtr& msg) {
+        window.count(topic, msg->header.stamp);
+      };
   return nh.subscribe<Msg>(topic, 1000, callback);
+}
+
+/// Waits until every subscription has its publisher; false after 60 s.
+bool waitForPublishers(const std::vector<ros::Subscriber>& subs) {
+  const WallClock::time_point deadline = WallClock::now() + std::chrono::seconds(60);
+  for (const ros::Subscriber& sub : subs) {
+    while (ros::ok() && sub.getNumPublishers() == 0) {
+      if (WallClock::now() > deadline) {
+        std::fprintf(stderr, "%s did not connect within 60 s\n", sub.getTopic().c_str());
+        return false;
+      }
+      ros::WallDuration(0.05).sleep();
+    }
+  }
+  return true;
+}
+
+void spinFor(std::chrono::milliseconds period) {
+  const WallClock::time_point until = WallClock::now() + period;
+  while (WallClock::now() < until)
+    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  ros::init(argc, argv, "bench_rate_listener");
+  ros::init(argc, argv, "bench_rate_listener", ros::init_options::AnonymousName);
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_rate_listener WARMUP_SIM_S MEASURE_SIM_S\n");
+    std::fprintf(stderr, "usage: bench_rate_listener WARMUP_SIM_S MEASURE_SIM_S [NAMESPACE...]\n");
     return 2;
   }
   Window window;
@@ -70,31 +95,26 @@ int main(int argc, char** argv) {
   const double measure_s = std::stod(argv[2]);
   window.end_s = window.start_s + measure_s;
   ros::NodeHandle nh;
+  std::vector<std::string> namespaces(argv + 3, argv + argc);
+  if (namespaces.empty()) namespaces.push_back("/");
+  std::vector<ros::Subscriber> subs;
+  for (const std::string& name : namespaces) {
+    const std::string ns = name == "/" ? "/" : "/" + name + "/";
+    subs.push_back(countHeader<nav_msgs::Odometry>(nh, ns + "odom", window));
+    subs.push_back(countHeader<sensor_msgs::LaserScan>(nh, ns + "scan", window));
+    subs.push_back(countHeader<sensor_msgs::Imu>(nh, ns + "imu", window));
+    subs.push_back(countHeader<sensor_msgs::JointState>(nh, ns + "joint_states", window));
+  }
+  window.counts["/tf"] = 0;
   const boost::function<void(const tf2_msgs::TFMessage::ConstPtr&)> tf_callback =
       [&window](const tf2_msgs::TFMessage::ConstPtr& msg) {
-        if (!msg->transforms.empty()) window.count("/tf", msg->transforms[0].header.stamp);
+        for (const auto& transform : msg->transforms) window.count("/tf", transform.header.stamp);
       };
   const boost::function<void(const rosgraph_msgs::Clock::ConstPtr&)> clock_callback =
       [&window](const rosgraph_msgs::Clock::ConstPtr& msg) { window.onClock(*msg); };
-  std::vector<ros::Subscriber> subs = {
-      countHeader<nav_msgs::Odometry>(nh, "/odom", window),
-      countHeader<sensor_msgs::LaserScan>(nh, "/scan", window),
-      countHeader<sensor_msgs::Imu>(nh, "/imu", window),
-      countHeader<sensor_msgs::JointState>(nh, "/joint_states", window),
-      nh.subscribe<tf2_msgs::TFMessage>("/tf", 1000, tf_callback),
-      nh.subscribe<rosgraph_msgs::Clock>("/clock", 100, clock_callback),
-  };
-  window.counts["/tf"] = 0;
-  const WallClock::time_point connect_deadline = WallClock::now() + std::chrono::seconds(60);
-  for (const ros::Subscriber& sub : subs) {
-    while (ros::ok() && sub.getNumPublishers() == 0) {
-      if (WallClock::now() > connect_deadline) {
-        std::fprintf(stderr, "%s did not connect within 60 s\n", sub.getTopic().c_str());
-        return 1;
-      }
-      ros::WallDuration(0.05).sleep();
-    }
-  }
+  subs.push_back(nh.subscribe<tf2_msgs::TFMessage>("/tf", 1000, tf_callback));
+  subs.push_back(nh.subscribe<rosgraph_msgs::Clock>("/clock", 100, clock_callback));
+  if (!waitForPublishers(subs)) return 1;
   if (!ros::service::waitForService("/gazebo/unpause_physics", ros::Duration(60))) return 1;
   std_srvs::Empty unpause;
   ros::service::call("/gazebo/unpause_physics", unpause);
@@ -105,11 +125,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sim time did not reach %.1f s\n", window.end_s);
     return 1;
   }
-  const WallClock::time_point drain_until = WallClock::now() + std::chrono::milliseconds(500);
-  while (WallClock::now() < drain_until)
-    ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
+  spinFor(std::chrono::milliseconds(500));  // messages still in flight
   for (const auto& [topic, count] : window.counts)
-    std::printf("%-14s %8.1f Hz (sim time)\n", topic.c_str(), count / measure_s);
+    std::printf("%-22s %8.1f Hz (sim time)\n", topic.c_str(), count / measure_s);
   const double wall_s = std::chrono::duration<double>(window.wall_end - window.wall_start).count();
   const double sim_s = window.sim_end_s - window.sim_start_s;
   std::printf("sim %.2f s in %.3f s wall\n", sim_s, wall_s);
