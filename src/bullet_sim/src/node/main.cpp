@@ -50,6 +50,7 @@ int run(const Config& config, ros::NodeHandle& nh) {
   bullet_sim_node::SimRunner runner(sim, nh, gazebo_nh, config.start_paused,
                                     config.model_states_rate_hz);
   runner.logSimulationWarnings();  // how the world's movable models were built
+  bullet_sim_node::releaseParserMemory();
   if (!config.robot_name.empty()) spawnStartRobot(config, &runner);
   bullet_sim_node::Pacer pacer(config.real_time_factor);
   bullet_sim_node::PhysicsServices physics_services(runner, pacer, gazebo_nh);

@@ -2,6 +2,8 @@
 
 #include "tf_prefix.h"
 
+#include <malloc.h>
+
 #include <ros/console.h>
 #include <rosgraph_msgs/Clock.h>
 
@@ -45,6 +47,14 @@ void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec
     throw;
   }
   spawn_poses_[name] = pose;
+  releaseParserMemory();
+}
+
+void releaseParserMemory() {
+  // Parsing a model or world (urdfdom, libsdformat's element trees) frees tens of
+  // megabytes in small blocks that glibc keeps for reuse; the simulation never needs
+  // them again, so they go back to the system.
+  malloc_trim(0);
 }
 
 bool SimRunner::remove(const std::string& name) {

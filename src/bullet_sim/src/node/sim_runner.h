@@ -57,4 +57,7 @@ class SimRunner {
   bool paused_;
 };
 
+/// Returns the memory that parsing a world or model freed to the system.
+void releaseParserMemory();
+
 }  // namespace bullet_sim_node
