@@ -116,10 +116,13 @@ double Renderer::depthAt(int col, int row) const {
 void Renderer::depthImage(std::vector<float>* depth_m) const {
   depth_m->resize(inverse_depth_.size());
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (std::size_t i = 0; i < inverse_depth_.size(); ++i) {
-    const float inverse_depth = inverse_depth_[i];
-    (*depth_m)[i] = inverse_depth > 0.0f ? static_cast<float>(1.0 / inverse_depth) : nan;
-  }
+  const float* in = inverse_depth_.data();
+  float* out = depth_m->data();
+  const std::size_t n = inverse_depth_.size();
+  // Two branch-free passes in float, so that the compiler divides and selects several
+  // pixels at once (a division inside the condition cannot be vectorised: it could trap).
+  for (std::size_t i = 0; i < n; ++i) out[i] = 1.0f / in[i];
+  for (std::size_t i = 0; i < n; ++i) out[i] = in[i] > 0.0f ? out[i] : nan;
 }
 
 }  // namespace sim_render

@@ -9,10 +9,9 @@ namespace bullet_sim {
 
 void applyDepthCutoffs(const DepthSpec& depth, std::vector<float>* depth_m) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (float& d : *depth_m) {
-    // Written so that NaN stays NaN and only the open interval passes.
-    if (!(d > depth.cutoff_m && d < depth.cutoff_max_m)) d = nan;
-  }
+  const float low = static_cast<float>(depth.cutoff_m), high = static_cast<float>(depth.cutoff_max_m);
+  // A select the compiler vectorises; NaN stays NaN and only the open interval passes.
+  for (float& d : *depth_m) d = (d > low && d < high) ? d : nan;
 }
 
 void makePointCloud(const CameraSpec& camera, const DepthImageData& depth,
