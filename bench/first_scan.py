@@ -4,7 +4,10 @@
 this process has its first laser scan, either with the master started by roslaunch
 (`own-master`) or with a master already running (`running-master`). rospy is imported before
 the clock starts. Then, after 5 s of simulation at real time, reads bullet_sim_node's
-resident memory. Prints both, the launch time last.
+resident memory. Prints both, the launch time last, after a timeline of when each stage
+was first seen (polling the master every 5 ms): the master up, the robot description set
+(xacro done), the simulator's spawn service up (node started, world loaded), spawn_model
+registered, the robot's /scan advertised (robot spawned), the first scan received.
 
 Usage: first_scan.py own-master|running-master   (BENCH_ROS_PORT, default 11462)
 """
@@ -14,6 +17,37 @@ import threading
 import time
 
 import ros_bench
+
+
+MILESTONES = (
+    ("master up", lambda m: m.is_online()),
+    ("robot_description set (xacro ran)", lambda m: m.hasParam("/robot_description")),
+    ("/gazebo/spawn_urdf_model up (node started, world loaded)",
+     lambda m: bool(m.lookupService("/gazebo/spawn_urdf_model"))),
+    ("spawn_model registered", lambda m: "/spawn_urdf" in nodes_of(m)),
+    ("/scan advertised (robot spawned)",
+     lambda m: any(topic == "/scan" for topic, _ in m.getSystemState()[0])),
+)
+
+
+def nodes_of(master):
+    publishers, subscribers, services = master.getSystemState()
+    return {node for _, nodes in publishers + subscribers + services for node in nodes}
+
+
+def watch(master, start, seen, done):
+    """Records when each milestone is first true, polling the master until `done` is set."""
+    pending = list(MILESTONES)
+    while pending and not done.is_set():
+        for milestone in list(pending):
+            try:
+                reached = milestone[1](master)
+            except Exception:  # master not up yet, or a lookup of something not there
+                reached = False
+            if reached:
+                seen[milestone[0]] = time.monotonic() - start
+                pending.remove(milestone)
+        time.sleep(0.005)
 
 
 def main():
@@ -34,7 +68,11 @@ def main():
             ros_bench.start_master(procs, env, port)
         elif ros_bench.master_up(env):
             sys.exit("a ROS master already runs on port %d" % port)
+        seen, done = {}, threading.Event()
         start = time.monotonic()
+        watcher = threading.Thread(target=watch, args=(rosgraph.Master("/bench_first_scan_watch"),
+                                                         start, seen, done), daemon=True)
+        watcher.start()
         launch = procs.start(["roslaunch", "-p", str(port), "turtlebot3_gazebo",
                               "roundTrack_simulation.launch", "gui:=false"], env)
         ros_bench.wait_for(master.is_online, "the launch's master", poll_s=0.005)
@@ -43,12 +81,17 @@ def main():
         if not got_scan.wait(timeout=60):
             sys.exit("no /scan within 60 s of the launch")
         launch_s = time.monotonic() - start
+        done.set()
+        watcher.join()
         time.sleep(5.0)
         node = ros_bench.process_named(ros_bench.descendants(launch.pid), "bullet_sim_node")
         if node is None:
             sys.exit("bullet_sim_node is not running under roslaunch")
         memory_mb = ros_bench.resident_mb(node)
         rospy.signal_shutdown("measured")
+    for name, _ in MILESTONES:
+        print("  %6s s  %s" % ("%.3f" % seen[name] if name in seen else "-", name))
+    print("  %6.3f s  first /scan received" % launch_s)
     print("bullet_sim_node resident memory %.1f MB" % memory_mb)
     print("launch to first /scan (%s) %.3f s" % (mode, launch_s))
 

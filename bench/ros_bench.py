@@ -87,6 +87,21 @@ def burger_urdf(env, path):
     return path
 
 
+def depth_burger_urdf(urdf, path):
+    """Writes the Burger with its camera made a depth camera (as a Gazebo user does it: sensor
+    type depth, the openni_kinect plugin) to `path`, for the depth frame's cost."""
+    with open(urdf) as f:
+        text = f.read()
+    for old, new in (('<sensor name="camera" type="camera">', '<sensor name="camera" type="depth">'),
+                     ("libgazebo_ros_camera.so", "libgazebo_ros_openni_kinect.so")):
+        if old not in text:
+            raise RuntimeError("%s: no %s to make the camera a depth camera" % (urdf, old))
+        text = text.replace(old, new)
+    with open(path, "w") as out:
+        out.write(text)
+    return path
+
+
 def resident_mb(pid, field="VmRSS"):
     """Resident memory of a process in MB (VmRSS now, VmHWM at its peak)."""
     with open("/proc/%d/status" % pid) as status:
