@@ -298,6 +298,7 @@ class SdfModelConverter {
   }
 
   urdf::GeometrySharedPtr geometry(const sdf::Geometry& g, const std::string& where) const {
+    checkGeometrySize(g, where);
     switch (g.Type()) {
       case sdf::GeometryType::BOX: {
         auto box = std::make_shared<urdf::Box>();
