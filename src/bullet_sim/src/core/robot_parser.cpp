@@ -108,7 +108,9 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
   {
     CapturedLog log;
     spec.urdf = urdf::parseURDF(urdf_xml);
-    if (!spec.urdf) {
+    // urdfdom logs some errors and carries on without the element (a collision whose origin
+    // has a nan is left out, an inertia with one becomes zero): that would be a half-load.
+    if (!spec.urdf || !log.errors().empty()) {
       throw LoadError(source_name + ": invalid URDF: " +
                       (log.errors().empty() ? "urdfdom could not parse it" : log.errors()));
     }

@@ -88,6 +88,38 @@ void checkInertial(const urdf::Link& link, const std::string& source) {
   }
 }
 
+bool validSize(double v) { return v >= 0 && std::isfinite(v); }
+
+/// urdfdom reads box sizes and radii as written, negative ones too.
+void checkGeometry(const urdf::Geometry& g, const std::string& where) {
+  std::ostringstream text;
+  if (g.type == urdf::Geometry::BOX) {
+    const urdf::Vector3& d = static_cast<const urdf::Box&>(g).dim;
+    if (validSize(d.x) && validSize(d.y) && validSize(d.z)) return;
+    text << "<box size>: '" << d.x << " " << d.y << " " << d.z << "'";
+  } else if (g.type == urdf::Geometry::CYLINDER) {
+    const auto& c = static_cast<const urdf::Cylinder&>(g);
+    if (validSize(c.radius) && validSize(c.length)) return;
+    text << "<cylinder radius length>: '" << c.radius << " " << c.length << "'";
+  } else if (g.type == urdf::Geometry::SPHERE) {
+    const double radius = static_cast<const urdf::Sphere&>(g).radius;
+    if (validSize(radius)) return;
+    text << "<sphere radius>: '" << radius << "'";
+  } else {
+    return;
+  }
+  throw LoadError(where + ": " + text.str() + " must be finite and not negative");
+}
+
+void checkGeometries(const urdf::Link& link, const std::string& source) {
+  for (const urdf::CollisionSharedPtr& c : link.collision_array) {
+    if (c && c->geometry) checkGeometry(*c->geometry, source + ": link '" + link.name + "' <collision>");
+  }
+  for (const urdf::VisualSharedPtr& v : link.visual_array) {
+    if (v && v->geometry) checkGeometry(*v->geometry, source + ": link '" + link.name + "' <visual>");
+  }
+}
+
 }  // namespace
 
 void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source) {
@@ -95,6 +127,7 @@ void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source
   checkNoLoop(model, source);
   for (const auto& entry : model.links_) {
     if (entry.second->inertial) checkInertial(*entry.second, source);
+    checkGeometries(*entry.second, source);
   }
 }
 

@@ -11,7 +11,8 @@ namespace bullet_sim {
 /// joints that close a loop (urdfdom keeps one parent per link and may leave a loop out of
 /// the tree, or hand back a cycle), an <inertial> with a mass that is not positive, or an
 /// inertia tensor that is not positive definite or breaks the triangle inequality of its
-/// principal moments (no rigid body has those).
+/// principal moments (no rigid body has those), a negative or non-finite box size, cylinder
+/// radius or length, or sphere radius.
 /// @throws LoadError naming `source`, the link or joints and the values.
 void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source);
 

@@ -91,7 +91,28 @@ TEST(BadUrdf, InfInAnAxisNamesJointAndValue) {
       << e.text;
 }
 
+TEST(BadUrdf, NanInACollisionOriginIsNotLeftOut) {
+  // urdfdom logs the error, drops the collision and returns the model: a half-load.
+  const RobotError e("urdf_nan_collision_origin.urdf");
+  EXPECT_EQ(e.text, e.path + ": invalid URDF: Unable to parse component [nan] to a double "
+                             "(while parsing a vector value); Could not parse collision element "
+                             "for Link [base_link]");
+}
+
+TEST(BadUrdf, NegativeBoxSizeNamesLinkAndValue) {
+  const RobotError e("urdf_negative_box_size.urdf");
+  EXPECT_EQ(e.text, e.path + ": link 'base_link' <collision>: <box size>: '0.2 -0.2 0.1' must "
+                             "be finite and not negative");
+}
+
 // ------------------------------------------------------------ mass and inertia ----
+
+TEST(BadUrdf, NanInAnInertiaIsNotZeroed) {
+  // urdfdom logs the error and hands back the link with every moment 0.
+  const RobotError e("urdf_nan_inertia.urdf");
+  EXPECT_EQ(e.text, e.path + ": invalid URDF: Inertial: inertia element ixx is not a valid "
+                             "double; Could not parse inertial element for Link [base_link]");
+}
 
 TEST(BadUrdf, ZeroMassNamesLinkAndValue) {
   const RobotError e("urdf_zero_mass.urdf");
