@@ -61,33 +61,6 @@ void checkNoLoop(const urdf::ModelInterface& model, const std::string& source) {
   }
 }
 
-void checkInertial(const urdf::Link& link, const std::string& source) {
-  const urdf::Inertial& in = *link.inertial;
-  const std::string where = source + ": link '" + link.name + "' <inertial>";
-  std::ostringstream text;
-  if (!(in.mass > 0 && std::isfinite(in.mass))) {
-    text << in.mass;
-    throw LoadError(where + " <mass>: '" + text.str() +
-                    "' must be > 0 (leave <inertial> out for a link without mass)");
-  }
-  Eigen::Matrix3d I;
-  I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
-  text << "ixx " << in.ixx << " ixy " << in.ixy << " ixz " << in.ixz << " iyy " << in.iyy
-       << " iyz " << in.iyz << " izz " << in.izz << " has principal moments ";
-  Eigen::Vector3d moments = Eigen::Vector3d::Constant(std::nan(""));
-  if (I.allFinite()) moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
-  text << moments[0] << " " << moments[1] << " " << moments[2];
-  if (!(moments.minCoeff() > 0)) {
-    throw LoadError(where + " <inertia>: " + text.str() +
-                    ": they must all be > 0 (the tensor must be positive definite)");
-  }
-  // Eigen sorts them ascending: only the largest can exceed the sum of the other two.
-  if (moments[0] + moments[1] < moments[2] - kTriangleTolerance * moments.sum()) {
-    throw LoadError(where + " <inertia>: " + text.str() + ": the largest exceeds the sum of " +
-                    "the other two, which no rigid body allows");
-  }
-}
-
 bool validSize(double v) { return v >= 0 && std::isfinite(v); }
 
 /// urdfdom reads box sizes and radii as written, negative ones too.
@@ -112,22 +85,49 @@ void checkGeometry(const urdf::Geometry& g, const std::string& where) {
 }
 
 void checkGeometries(const urdf::Link& link, const std::string& source) {
+  const std::string where = source + ": link '" + link.name + "'";
   for (const urdf::CollisionSharedPtr& c : link.collision_array) {
-    if (c && c->geometry) checkGeometry(*c->geometry, source + ": link '" + link.name + "' <collision>");
+    if (c && c->geometry) checkGeometry(*c->geometry, where + " <collision>");
   }
   for (const urdf::VisualSharedPtr& v : link.visual_array) {
-    if (v && v->geometry) checkGeometry(*v->geometry, source + ": link '" + link.name + "' <visual>");
+    if (v && v->geometry) checkGeometry(*v->geometry, where + " <visual>");
   }
 }
 
 }  // namespace
 
+void checkInertial(const urdf::Inertial& in, const std::string& link_where) {
+  const std::string where = link_where + " <inertial>";
+  std::ostringstream text;
+  if (!(in.mass > 0 && std::isfinite(in.mass))) {
+    text << in.mass;
+    throw LoadError(where + " <mass>: '" + text.str() + "' must be > 0");
+  }
+  Eigen::Matrix3d I;
+  I << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  text << "ixx " << in.ixx << " ixy " << in.ixy << " ixz " << in.ixz << " iyy " << in.iyy
+       << " iyz " << in.iyz << " izz " << in.izz << " has principal moments ";
+  Eigen::Vector3d moments = Eigen::Vector3d::Constant(std::nan(""));
+  if (I.allFinite()) moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(I).eigenvalues();
+  text << moments[0] << " " << moments[1] << " " << moments[2];
+  if (!(moments.minCoeff() > 0)) {
+    throw LoadError(where + " <inertia>: " + text.str() +
+                    ": they must all be > 0 (the tensor must be positive definite)");
+  }
+  // Eigen sorts them ascending: only the largest can exceed the sum of the other two.
+  if (moments[0] + moments[1] < moments[2] - kTriangleTolerance * moments.sum()) {
+    throw LoadError(where + " <inertia>: " + text.str() + ": the largest exceeds the sum of " +
+                    "the other two, which no rigid body allows");
+  }
+}
+
 void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source) {
   checkOneParentEach(model, source);
   checkNoLoop(model, source);
   for (const auto& entry : model.links_) {
-    if (entry.second->inertial) checkInertial(*entry.second, source);
-    checkGeometries(*entry.second, source);
+    const urdf::Link& link = *entry.second;
+    if (link.inertial) checkInertial(*link.inertial, source + ": link '" + link.name + "'");
+    checkGeometries(link, source);
   }
 }
 

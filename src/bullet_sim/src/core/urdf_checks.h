@@ -16,6 +16,11 @@ namespace bullet_sim {
 /// @throws LoadError naming `source`, the link or joints and the values.
 void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source);
 
+/// The mass and inertia check of checkUrdfModel for one link (SDF models converted to URDF
+/// links use it too). `link_where` starts the message ("file: link 'base'").
+/// @throws LoadError naming the link and the values.
+void checkInertial(const urdf::Inertial& inertial, const std::string& link_where);
+
 }  // namespace bullet_sim
 
 #endif  // BULLET_SIM_CORE_URDF_CHECKS_H

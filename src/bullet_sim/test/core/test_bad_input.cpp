@@ -116,14 +116,12 @@ TEST(BadUrdf, NanInAnInertiaIsNotZeroed) {
 
 TEST(BadUrdf, ZeroMassNamesLinkAndValue) {
   const RobotError e("urdf_zero_mass.urdf");
-  EXPECT_EQ(e.text, e.path + ": link 'base_link' <inertial> <mass>: '0' must be > 0 (leave "
-                             "<inertial> out for a link without mass)");
+  EXPECT_EQ(e.text, e.path + ": link 'base_link' <inertial> <mass>: '0' must be > 0");
 }
 
 TEST(BadUrdf, NegativeMassNamesLinkAndValue) {
   const RobotError e("urdf_negative_mass.urdf");
-  EXPECT_TRUE(e.has(e.path + ": link 'base_link' <inertial> <mass>: '-2.5' must be > 0"))
-      << e.text;
+  EXPECT_EQ(e.text, e.path + ": link 'base_link' <inertial> <mass>: '-2.5' must be > 0");
 }
 
 TEST(BadUrdf, NegativeMomentNamesLinkTensorAndPrincipalMoments) {
@@ -249,4 +247,15 @@ TEST(BadWorld, NegativeSphereRadiusOfASpawnedSdfModel) {
                        "and not negative"),
             std::string::npos)
       << error;
+}
+
+TEST(BadWorld, SpawnedSdfModelWithImpossibleInertiaNamesModelLinkAndMoments) {
+  // The same check as a URDF link's: 0.1 + 0.1 < 0.3.
+  const std::string sdf = R"(<?xml version="1.0"?><sdf version="1.6"><model name="cart">
+      <link name="body"><inertial><mass>1</mass><inertia><ixx>0.1</ixx><ixy>0</ixy><ixz>0</ixz>
+      <iyy>0.1</iyy><iyz>0</iyz><izz>0.3</izz></inertia></inertial></link></model></sdf>)";
+  EXPECT_EQ(loadErrorOf([&] { parseSdfModelString(sdf, "cart.sdf"); }),
+            "cart.sdf: model 'cart' link 'body' <inertial> <inertia>: ixx 0.1 ixy 0 ixz 0 iyy 0.1 "
+            "iyz 0 izz 0.3 has principal moments 0.1 0.1 0.3: the largest exceeds the sum of the "
+            "other two, which no rigid body allows");
 }
