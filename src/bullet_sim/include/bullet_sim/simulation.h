@@ -72,6 +72,9 @@ class Simulation {
   /// wrenches and efforts cleared.
   void reset();
 
+  /// The diff drive's command. One that would turn a wheel faster than its joint's URDF
+  /// <limit velocity> is scaled down to fit, keeping the turn radius; the first time for a
+  /// robot, takeWarnings() says so.
   void setCmdVel(const std::string& robot, double linear_mps, double angular_radps);
   Pose3 modelPose(const std::string& robot) const;  ///< model frame in the world
   Twist3 modelTwist(const std::string& robot) const;

@@ -12,12 +12,25 @@ constexpr double kSnapMps = 0.01;
 }  // namespace
 
 DiffDriveController::DiffDriveController(const DiffDriveSpec& spec, size_t left_joint,
-                                         size_t right_joint)
-    : spec_(spec), joints_{left_joint, right_joint} {}
+                                         size_t right_joint, double left_max_radps,
+                                         double right_max_radps)
+    : spec_(spec), joints_{left_joint, right_joint}, max_radps_{left_max_radps, right_max_radps} {}
 
-void DiffDriveController::setCommand(double linear_mps, double angular_radps) {
-  command_v_ = linear_mps;
-  command_w_ = angular_radps;
+double DiffDriveController::setCommand(double linear_mps, double angular_radps) {
+  const double radius_m = spec_.wheel_diameter_m / 2.0;
+  const double half_track = spec_.wheel_separation_m / 2.0;
+  const double wheel_radps[2] = {(linear_mps - angular_radps * half_track) / radius_m,
+                                 (linear_mps + angular_radps * half_track) / radius_m};
+  double scale = 1.0;
+  for (int side = 0; side < 2; ++side) {
+    if (std::fabs(wheel_radps[side]) > max_radps_[side]) {
+      scale = std::min(scale, max_radps_[side] / std::fabs(wheel_radps[side]));
+    }
+  }
+  // Scaling v and w alike scales both wheel speeds alike: v / w, the turn radius, stays.
+  command_v_ = linear_mps * scale;
+  command_w_ = angular_radps * scale;
+  return scale;
 }
 
 void DiffDriveController::updateMotors(PhysicsRobot* robot, double time_s, double physics_dt_s) {

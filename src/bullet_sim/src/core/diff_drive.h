@@ -11,12 +11,19 @@ namespace bullet_sim {
 /// The libgazebo_ros_diff_drive.so behaviour: turns (v, w) into wheel velocity
 /// motors at the plugin's update rate, ramping the commanded rim speed by at
 /// most wheelAcceleration * dt per update, with wheelTorque as the motor limit;
-/// and integrates encoder odometry from the wheel joint speeds.
+/// and integrates encoder odometry from the wheel joint speeds. A command that would turn a
+/// wheel faster than its joint's <limit velocity> is scaled down whole, as a real base
+/// controller does: both wheels slow by the same factor, so the turn radius stays.
 class DiffDriveController {
  public:
-  DiffDriveController(const DiffDriveSpec& spec, size_t left_joint, size_t right_joint);
+  /// `left_max_radps` / `right_max_radps`: the wheel joints' velocity limits (infinity for
+  /// none).
+  DiffDriveController(const DiffDriveSpec& spec, size_t left_joint, size_t right_joint,
+                      double left_max_radps, double right_max_radps);
 
-  void setCommand(double linear_mps, double angular_radps);
+  /// Sets the command the motors follow from the next update.
+  /// @return the factor (<= 1) it was scaled by to keep both wheels within their limits.
+  double setCommand(double linear_mps, double angular_radps);
   /// Updates the wheel motors (call at the plugin's update steps).
   void updateMotors(PhysicsRobot* robot, double time_s, double physics_dt_s);
   /// Integrates encoder odometry over one physics step.
@@ -32,6 +39,7 @@ class DiffDriveController {
  private:
   DiffDriveSpec spec_;
   size_t joints_[2];
+  double max_radps_[2];
   double command_v_ = 0, command_w_ = 0;
   double instructed_mps_[2] = {0, 0};  ///< rim speeds given to the motors
   double last_update_s_ = 0;

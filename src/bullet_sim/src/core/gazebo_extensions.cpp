@@ -115,11 +115,11 @@ class ExtensionReader {
       ImuSpec imu;
       imu.name = name;
       imu.link = link;
-      imu.update_rate_hz = xml_.number(s, "update_rate", 0, where);
+      imu.update_rate_hz = rate(s, "update_rate", 0, where);
       const std::string pw = where + " <plugin>";
       imu.topic = xml_.text(plugin, "topicName", imu.topic);
       imu.frame_id = xml_.text(plugin, "frameName", link);
-      imu.update_rate_hz = xml_.number(plugin, "updateRateHZ", imu.update_rate_hz, pw);
+      imu.update_rate_hz = rate(plugin, "updateRateHZ", imu.update_rate_hz, pw);
       imu.gaussian_noise = xml_.number(plugin, "gaussianNoise", 0, pw);
       spec_->imus.push_back(imu);
     } else if (type == "camera") {
@@ -140,6 +140,17 @@ class ExtensionReader {
     }
   }
 
+  /// An update rate in Hz: 0 means every step, as in Gazebo; a negative one is an error.
+  double rate(const XMLElement* parent, const char* name, double fallback,
+              const std::string& where) const {
+    const double hz = xml_.number(parent, name, fallback, where);
+    if (!(hz >= 0 && std::isfinite(hz))) {
+      xml_.fail(where + " <" + name + ">", "'" + xml_.text(parent, name, "") +
+                                             "' is not a rate >= 0 Hz");
+    }
+    return hz;
+  }
+
   void noPlugin(const std::string& type, const std::string& name, const std::string& link,
                 const std::string& file) {
     if (file.empty()) {
@@ -156,7 +167,7 @@ class ExtensionReader {
     r.name = name;
     r.link = link;
     r.pose_in_link = xml_.pose(s, "pose", where);
-    r.update_rate_hz = xml_.number(s, "update_rate", r.update_rate_hz, where);
+    r.update_rate_hz = rate(s, "update_rate", r.update_rate_hz, where);
     const XMLElement* ray = s->FirstChildElement("ray");
     const XMLElement* scan = ray ? ray->FirstChildElement("scan") : nullptr;
     const XMLElement* hor = scan ? scan->FirstChildElement("horizontal") : nullptr;
@@ -170,6 +181,10 @@ class ExtensionReader {
     r.samples = static_cast<int>(samples);
     r.min_angle_rad = xml_.number(hor, "min_angle", 0, hw);
     r.max_angle_rad = xml_.number(hor, "max_angle", 0, hw);
+    if (!(r.min_angle_rad <= r.max_angle_rad)) {
+      xml_.fail(hw, "min_angle " + xml_.text(hor, "min_angle", "") + " must not be above " +
+                        "max_angle " + xml_.text(hor, "max_angle", ""));
+    }
     const std::string rw = where + " <range>";
     r.range_min_m = xml_.number(range, "min", r.range_min_m, rw);
     r.range_max_m = xml_.number(range, "max", r.range_max_m, rw);
@@ -195,7 +210,7 @@ class ExtensionReader {
     c.name = name;
     c.link = link;
     c.pose_in_link = xml_.pose(s, "pose", where);
-    c.update_rate_hz = xml_.number(s, "update_rate", 0, where);
+    c.update_rate_hz = rate(s, "update_rate", 0, where);
     const XMLElement* cam = s->FirstChildElement("camera");
     if (!cam) xml_.fail(where, "needs a <camera> element");
     const std::string cw = where + " <camera>";
@@ -215,7 +230,7 @@ class ExtensionReader {
     c.image_topic = xml_.text(plugin, "imageTopicName", image_topic);
     c.info_topic = xml_.text(plugin, "cameraInfoTopicName", info_topic);
     c.frame_id = xml_.text(plugin, "frameName", link);
-    const double plugin_rate = xml_.number(plugin, "updateRate", 0, pw);
+    const double plugin_rate = rate(plugin, "updateRate", 0, pw);
     if (plugin_rate > 0) c.update_rate_hz = plugin_rate;
     return c;
   }
@@ -304,7 +319,7 @@ class ExtensionReader {
       if (imu.link.empty()) xml_.fail(where, "<bodyName> is missing");
       imu.topic = xml_.text(p, "topicName", imu.topic);
       imu.frame_id = xml_.text(p, "frameName", imu.link);
-      imu.update_rate_hz = xml_.number(p, "updateRate", 0, where);
+      imu.update_rate_hz = rate(p, "updateRate", 0, where);
       imu.gaussian_noise = xml_.number(p, "gaussianNoise", 0, where);
       spec_->imus.push_back(imu);
     } else {
@@ -329,7 +344,7 @@ class ExtensionReader {
     d.wheel_diameter_m = xml_.number(p, "wheelDiameter", d.wheel_diameter_m, where);
     d.wheel_torque_nm = xml_.number(p, "wheelTorque", d.wheel_torque_nm, where);
     d.wheel_acceleration = xml_.number(p, "wheelAcceleration", d.wheel_acceleration, where);
-    d.update_rate_hz = xml_.number(p, "updateRate", d.update_rate_hz, where);
+    d.update_rate_hz = rate(p, "updateRate", d.update_rate_hz, where);
     const std::string source = xml_.text(p, "odometrySource", "world");
     if (source == "world" || source == "1") {
       d.odometry_source = OdomSource::World;
@@ -346,7 +361,6 @@ class ExtensionReader {
     if (d.wheel_diameter_m <= 0) xml_.fail(where + " <wheelDiameter>", "must be > 0");
     if (d.wheel_torque_nm <= 0) xml_.fail(where + " <wheelTorque>", "must be > 0");
     if (d.wheel_acceleration < 0) xml_.fail(where + " <wheelAcceleration>", "must be >= 0");
-    if (d.update_rate_hz < 0) xml_.fail(where + " <updateRate>", "must be >= 0");
     spec_->diff_drive = d;
   }
 

@@ -3,12 +3,14 @@
 #include <sstream>
 
 #include <console_bridge/console.h>
+#include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
 #include "gazebo_extensions.h"
 #include "robot_parser.h"
+#include "urdf_checks.h"
 
 namespace bullet_sim {
 namespace {
@@ -98,14 +100,22 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name,
                      const UriResolver& resolver) {
   RobotSpec spec;
+  // urdfdom says "Error document empty." for any text that is not XML: tinyxml2 says where.
+  tinyxml2::XMLDocument xml;
+  if (xml.Parse(urdf_xml.c_str(), urdf_xml.size()) != tinyxml2::XML_SUCCESS) {
+    throw LoadError(source_name + ": invalid URDF: not well-formed XML: " + xml.ErrorStr());
+  }
   {
     CapturedLog log;
     spec.urdf = urdf::parseURDF(urdf_xml);
-    if (!spec.urdf) {
+    // urdfdom logs some errors and carries on without the element (a collision whose origin
+    // has a nan is left out, an inertia with one becomes zero): that would be a half-load.
+    if (!spec.urdf || !log.errors().empty()) {
       throw LoadError(source_name + ": invalid URDF: " +
                       (log.errors().empty() ? "urdfdom could not parse it" : log.errors()));
     }
   }
+  checkUrdfModel(*spec.urdf, source_name);
   spec.name = spec.urdf->getName();
   std::vector<urdf::LinkSharedPtr> links;
   spec.urdf->getLinks(links);

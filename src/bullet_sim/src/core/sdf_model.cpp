@@ -14,6 +14,7 @@
 #include "robot_parser.h"
 #include "robot_plan.h"
 #include "sdf_util.h"
+#include "urdf_checks.h"
 
 namespace bullet_sim {
 namespace {
@@ -248,7 +249,9 @@ class SdfModelConverter {
     out->inertial->ixz = in.MassMatrix().Ixz();
     out->inertial->iyz = in.MassMatrix().Iyz();
     const std::string where = where_ + " link '" + entry.name + "'";
-    checkInertia(*out->inertial, where);
+    // libsdformat only warns about a bad inertia (static links may have one); a moving
+    // link cannot be simulated with it.
+    checkInertial(*out->inertial, where);
     for (uint64_t i = 0; i < l.CollisionCount(); ++i) {
       const sdf::Collision& c = *l.CollisionByIndex(i);
       auto col = std::make_shared<urdf::Collision>();
@@ -282,22 +285,8 @@ class SdfModelConverter {
     return out;
   }
 
-  /// libsdformat only warns about these (static links may have them); a moving link
-  /// cannot be simulated with them.
-  static void checkInertia(const urdf::Inertial& in, const std::string& where) {
-    const double moments[] = {in.ixx, in.iyy, in.izz, in.ixy, in.ixz, in.iyz};
-    const bool finite = std::all_of(std::begin(moments), std::end(moments),
-                                    [](double m) { return std::isfinite(m); });
-    if (in.mass > 0 && std::isfinite(in.mass) && finite && in.ixx > 0 && in.iyy > 0 && in.izz > 0) {
-      return;
-    }
-    std::ostringstream values;
-    values << "mass " << in.mass << ", ixx iyy izz " << in.ixx << " " << in.iyy << " " << in.izz;
-    throw LoadError(where + " <inertial>: " + values.str() +
-                    ": a movable link needs a positive mass and positive, finite moments");
-  }
-
   urdf::GeometrySharedPtr geometry(const sdf::Geometry& g, const std::string& where) const {
+    checkGeometrySize(g, where);
     switch (g.Type()) {
       case sdf::GeometryType::BOX: {
         auto box = std::make_shared<urdf::Box>();

@@ -1,7 +1,9 @@
 #include "sdf_util.h"
 
+#include <cmath>
 #include <sstream>
 
+#include "bullet_sim/errors.h"
 #include "gazebo_materials.h"
 
 namespace bullet_sim {
@@ -32,6 +34,36 @@ std::string geometryName(sdf::GeometryType type) {
     case sdf::GeometryType::ELLIPSOID: return "ellipsoid";
     default: return "polyline";
   }
+}
+
+namespace {
+
+bool validSize(double v) { return v >= 0 && std::isfinite(v); }
+
+}  // namespace
+
+void checkGeometrySize(const sdf::Geometry& geometry, const std::string& where) {
+  std::ostringstream value;
+  std::string element;
+  if (const sdf::Box* box = geometry.BoxShape()) {
+    const auto size = box->Size();
+    if (validSize(size.X()) && validSize(size.Y()) && validSize(size.Z())) return;
+    element = "<box> <size>";
+    value << size.X() << " " << size.Y() << " " << size.Z();
+  } else if (const sdf::Cylinder* cylinder = geometry.CylinderShape()) {
+    const bool radius_ok = validSize(cylinder->Radius());
+    if (radius_ok && validSize(cylinder->Length())) return;
+    element = radius_ok ? "<cylinder> <length>" : "<cylinder> <radius>";
+    value << (radius_ok ? cylinder->Length() : cylinder->Radius());
+  } else if (const sdf::Sphere* sphere = geometry.SphereShape()) {
+    if (validSize(sphere->Radius())) return;
+    element = "<sphere> <radius>";
+    value << sphere->Radius();
+  } else {
+    return;
+  }
+  throw LoadError(where + ": " + element + ": '" + value.str() +
+                  "' must be finite and not negative");
 }
 
 Eigen::Vector4f visualColour(const sdf::Visual& visual, const std::string& where,

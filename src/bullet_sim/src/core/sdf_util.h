@@ -25,6 +25,11 @@ ignition::math::Pose3d poseInParent(const T& element) {
 /// "box", "mesh", ... for messages.
 std::string geometryName(sdf::GeometryType type);
 
+/// A box size, cylinder radius or length, or sphere radius that is negative or not finite
+/// (libsdformat takes them as written) cannot be simulated or drawn.
+/// @throws LoadError "`where`: <box> <size>: '1 -0.5 0.3' ..." naming the value.
+void checkGeometrySize(const sdf::Geometry& geometry, const std::string& where);
+
 /// The colour a visual is drawn with, as Gazebo shows it: an explicit <diffuse> wins over a
 /// <script> material name, which wins over an <ambient>, then the default grey. An unknown
 /// script name adds a warning naming it (`where` says whose visual it is).

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 #include "bullet_sim/errors.h"
@@ -31,6 +33,14 @@ size_t requireHinge(const PhysicsRobot& robot, const std::string& robot_name,
                     "' that does not exist (or is not revolute/continuous)");
   }
   return static_cast<size_t>(index);
+}
+
+/// A wheel joint's <limit velocity> in rad/s; continuous joints may declare one, and 0
+/// (urdfdom's value when none is written) means no limit.
+double wheelSpeedLimit(const RobotSpec& spec, const std::string& joint) {
+  const urdf::JointConstSharedPtr j = spec.urdf->getJoint(joint);
+  if (j && j->limits && j->limits->velocity > 0) return j->limits->velocity;
+  return std::numeric_limits<double>::infinity();
 }
 
 }  // namespace
@@ -70,7 +80,8 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
     const DiffDriveSpec& d = *spec.diff_drive;
     const size_t left = requireHinge(*r->physics, name, "leftJoint", d.left_joint);
     const size_t right = requireHinge(*r->physics, name, "rightJoint", d.right_joint);
-    r->drive.emplace(d, left, right);
+    r->drive.emplace(d, left, right, wheelSpeedLimit(spec, d.left_joint),
+                     wheelSpeedLimit(spec, d.right_joint));
     joint_state_rate_hz = d.update_rate_hz;
   }
   r->imus.resize(spec.imus.size());
@@ -154,7 +165,15 @@ void Simulation::reset() {
 void Simulation::setCmdVel(const std::string& robot, double linear_mps, double angular_radps) {
   Impl::Robot& r = impl_->robot(robot);
   if (!r.drive) return;
-  r.drive->setCommand(linear_mps, angular_radps);
+  const double scale = r.drive->setCommand(linear_mps, angular_radps);
+  if (scale < 1.0 && !r.told_wheel_limit) {
+    r.told_wheel_limit = true;
+    std::ostringstream text;
+    text << "model '" << robot << "': cmd_vel " << linear_mps << " m/s, " << angular_radps
+         << " rad/s turns a wheel faster than its joint's <limit velocity>: scaled by " << scale
+         << " to fit, keeping the turn radius (said once per robot)";
+    impl_->pending_warnings.push_back(text.str());
+  }
   r.last_command_s = timeS();
   r.command_active = linear_mps != 0 || angular_radps != 0;
 }

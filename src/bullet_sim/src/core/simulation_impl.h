@@ -32,6 +32,7 @@ struct Simulation::Impl {
     std::optional<DiffDriveController> drive;
     double last_command_s = 0;   ///< sim time of the last setCmdVel
     bool command_active = false; ///< a non-zero command the timeout may stop
+    bool told_wheel_limit = false;  ///< a command was scaled to the wheel limits and we said so
     std::vector<std::mt19937_64> ray_rngs, imu_rngs;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;

@@ -136,11 +136,15 @@ class WorldReader {
                 WorldSpec* spec) {
     for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
       const sdf::Collision& col = *link.CollisionByIndex(c);
+      checkGeometrySize(*col.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
+                                         "' collision '" + col.Name() + "'");
       spec->shapes.push_back(shape(model, link, *col.Geom(),
                                    T_world_link * toIso(poseInParent(col)), true));
     }
     for (uint64_t v = 0; v < link.VisualCount(); ++v) {
       const sdf::Visual& vis = *link.VisualByIndex(v);
+      checkGeometrySize(*vis.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
+                                         "' visual '" + vis.Name() + "'");
       StaticShape s = shape(model, link, *vis.Geom(), T_world_link * toIso(poseInParent(vis)), false);
       s.rgba = visualColour(vis, source_ + ": model '" + model + "' link '" + link.Name() +
                                      "' visual '" + vis.Name() + "'",

@@ -83,6 +83,7 @@ void SimRunner::step() {
     if (robot != robots_.end()) robot->second->publish(sensor);
   }
   state_topics_.update();
+  logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
 }
 
 void SimRunner::logSimulationWarnings() {

@@ -1,5 +1,8 @@
 // Physics and diff-drive tests on the Burger, stepping the core by hand.
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -40,6 +43,26 @@ double jointPosition(const JointStateData& js, const std::string& name) {
   }
   ADD_FAILURE() << "no joint " << name;
   return 0;
+}
+
+double jointVelocity(const JointStateData& js, const std::string& name) {
+  for (size_t i = 0; i < js.names.size(); ++i) {
+    if (js.names[i] == name) return js.velocities[i];
+  }
+  ADD_FAILURE() << "no joint " << name;
+  return 0;
+}
+
+/// The Burger with <limit velocity="2.0"> on both (continuous) wheel joints.
+RobotSpec burgerWithWheelLimit() {
+  std::string urdf = bullet_sim_test::burgerUrdf();
+  for (const std::string side : {"left", "right"}) {
+    const std::string joint = "<joint name=\"wheel_" + side + "_joint\" type=\"continuous\">";
+    const size_t at = urdf.find(joint);
+    if (at == std::string::npos) throw std::runtime_error("no " + joint + " in the Burger");
+    urdf.insert(at + joint.size(), "<limit effort=\"1\" velocity=\"2.0\"/>");
+  }
+  return parseRobot(urdf, "robot_description");
 }
 
 class BurgerOnFlatGround : public ::testing::Test {
@@ -247,4 +270,56 @@ TEST(CommandTimeout, ARobotWhoseCommandsStopIsStoppedAndFreshCommandsKeepItGoing
     run(&sim, 0.25);
   }
   EXPECT_GT(sim.modelPose("burger").position.x() - stopped_x, 0.35);
+}
+
+// The Burger's wheels have radius 0.033 m and are 0.160 m apart.
+constexpr double kWheelRadiusM = 0.033, kHalfTrackM = 0.080;
+
+TEST(WheelLimits, CommandBeyondTheWheelLimitIsScaledToIt) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", burgerWithWheelLimit(), Pose3());
+  sim.setCmdVel("burger", 10.0, 0);  // 303 rad/s unclamped
+  run(&sim, 2.0);
+  const JointStateData js = sim.readJointStates("burger");
+  EXPECT_LE(std::fabs(jointVelocity(js, "wheel_left_joint")), 2.0 + 0.02);
+  EXPECT_LE(std::fabs(jointVelocity(js, "wheel_right_joint")), 2.0 + 0.02);
+  EXPECT_NEAR(jointVelocity(js, "wheel_left_joint"), 2.0, 0.05);
+  // Rolling without slip: 2.0 rad/s * 0.033 m = 0.066 m/s.
+  EXPECT_NEAR(sim.modelTwist("burger").linear.head<2>().norm(), 2.0 * kWheelRadiusM, 0.004);
+  const std::vector<std::string> warnings = sim.takeWarnings();
+  ASSERT_EQ(warnings.size(), 1u) << ::testing::PrintToString(warnings);
+  EXPECT_NE(warnings[0].find("model 'burger': cmd_vel 10 m/s, 0 rad/s turns a wheel faster than "
+                             "its joint's <limit velocity>: scaled by 0.0066"),
+            std::string::npos)
+      << warnings[0];
+}
+
+TEST(WheelLimits, ScaledTurnKeepsTheRatioOfTheWheelsAndIsToldOnce) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", burgerWithWheelLimit(), Pose3());
+  sim.takeWarnings();
+  // Rim speeds 10 -+ 50 * 0.08 = 6 and 14 m/s: the right wheel sets the scale, 2.0 rad/s,
+  // and the left one follows at 2.0 * 6 / 14 rad/s.
+  sim.setCmdVel("burger", 10.0, 50.0);
+  run(&sim, 1.0);
+  sim.setCmdVel("burger", 10.0, 50.0);
+  run(&sim, 1.0);
+  const JointStateData js = sim.readJointStates("burger");
+  EXPECT_NEAR(jointVelocity(js, "wheel_right_joint"), 2.0, 0.05);
+  EXPECT_NEAR(jointVelocity(js, "wheel_left_joint"), 2.0 * 6.0 / 14.0, 0.05);
+  // Turn rate (right - left) r / track: (2.0 - 0.857) * 0.033 / 0.16 = 0.236 rad/s.
+  EXPECT_NEAR(sim.modelTwist("burger").angular.z(),
+              2.0 * (1.0 - 6.0 / 14.0) * kWheelRadiusM / (2 * kHalfTrackM), 0.01);
+  EXPECT_EQ(sim.takeWarnings().size(), 1u);
+}
+
+TEST(WheelLimits, CommandWithinTheLimitIsUntouched) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", burgerWithWheelLimit(), Pose3());
+  sim.takeWarnings();
+  sim.setCmdVel("burger", 0.05, 0);  // 1.52 rad/s
+  run(&sim, 2.0);
+  EXPECT_NEAR(jointVelocity(sim.readJointStates("burger"), "wheel_left_joint"),
+              0.05 / kWheelRadiusM, 0.05);
+  EXPECT_TRUE(sim.takeWarnings().empty());
 }

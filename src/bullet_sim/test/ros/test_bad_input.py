@@ -9,12 +9,16 @@ import time
 import unittest
 
 import rosgraph
+import rospy
 
 import rostest
+from gazebo_msgs.srv import SpawnModel
+from geometry_msgs.msg import Pose
 from roslib.packages import find_node
 from rospkg import RosPack
 
 FIXTURES = os.path.join(RosPack().get_path("bullet_sim"), "test", "ros", "fixtures")
+CORE_FIXTURES = os.path.join(RosPack().get_path("bullet_sim"), "test", "fixtures")
 GOOD_WORLD = os.path.join(FIXTURES, "flat.world")
 TIMEOUT_S = 60
 
@@ -50,6 +54,39 @@ class BadInput(unittest.TestCase):
                                 "robot_description:=/two_roots_description")
         self.assertFailsWith(code, output, "robot_description", "Two root links")
 
+    def test_urdf_with_a_link_of_two_parents(self):
+        # urdfdom hands back a cycle for it, which once overflowed the node's stack.
+        code, output = run_node("two_parents", "_world_file:=" + GOOD_WORLD, "_robot_name:=two",
+                                "robot_description:=/two_parents_description")
+        self.assertEqual(code, 1, output)
+        self.assertFailsWith(code, output, "robot_description: link 'arm_a' is the child of "
+                             "joints 'b_to_a' and 'base_a'")
+
+    def test_world_with_a_negative_box_size(self):
+        world = os.path.join(CORE_FIXTURES, "world_negative_box_size.world")
+        code, output = run_node("negative_size", "_world_file:=" + world)
+        self.assertEqual(code, 1, output)
+        self.assertFailsWith(code, output, world + ": model 'crate' link 'body' collision "
+                             "'collision': <box> <size>: '1 -0.5 0.3' must be finite and not "
+                             "negative")
+
+    def test_spawning_a_urdf_with_nan_in_an_origin_fails_and_the_node_runs_on(self):
+        spawn = "/nan_spawn/spawn_urdf_model"
+        process = self.start_until_clock("nan_spawn", "/gazebo/spawn_urdf_model:=" + spawn)
+        try:
+            rospy.wait_for_service(spawn, timeout=TIMEOUT_S)
+            with open(os.path.join(CORE_FIXTURES, "urdf_nan_origin.urdf")) as urdf:
+                response = rospy.ServiceProxy(spawn, SpawnModel)("nan_robot", urdf.read(), "",
+                                                                 Pose(), "")
+            self.assertFalse(response.success)
+            message = response.status_message
+            self.assertIn("nan_robot: invalid URDF: Unable to parse component [nan]", message)
+            self.assertIn("origin element for joint [arm_joint]", message)
+            self.assertNotIn("\n", message)
+            self.assertIsNone(process.poll(), "the node ended after a bad spawn")
+        finally:
+            self.interrupt(process)
+
     def test_missing_robot_description(self):
         code, output = run_node("no_description", "_world_file:=" + GOOD_WORLD,
                                 "_robot_name:=burger", "robot_description:=/not_set")
@@ -76,6 +113,10 @@ class BadInput(unittest.TestCase):
         self.run_until_clock_then_interrupt("interrupted")
 
     def run_until_clock_then_interrupt(self, name, *args):
+        self.interrupt(self.start_until_clock(name, *args))
+
+    def start_until_clock(self, name, *args):
+        """Starts the node on the flat world; returns it once it publishes its clock."""
         node = find_node("bullet_sim", "bullet_sim_node")[0]
         clock = "/%s_clock" % name
         process = subprocess.Popen([node, "__name:=" + name, "_world_file:=" + GOOD_WORLD,
@@ -88,6 +129,9 @@ class BadInput(unittest.TestCase):
                 self.fail("the node ended early: " + process.stdout.read())
             self.assertLess(time.monotonic(), deadline, "the node did not advertise /clock")
             time.sleep(0.05)
+        return process
+
+    def interrupt(self, process):
         process.send_signal(signal.SIGINT)
         output, _ = process.communicate(timeout=TIMEOUT_S)
         self.assertEqual(process.returncode, 0, output)

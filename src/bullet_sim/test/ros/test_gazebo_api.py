@@ -112,6 +112,13 @@ class GazeboApi(unittest.TestCase):
         self.fails("spawn_urdf_model", "initial_pose position.z", "d", BOX_URDF, "",
                    yaw_pose(0, 0, NAN), "")
         self.fails("spawn_sdf_model", "is <static>", "d", SDF_STATIC_BOX, "", Pose(), "")
+        self.fails("spawn_sdf_model", "neither URDF", "d", "<sdf version='1.6'><model", "",
+                   Pose(), "")
+        negative_radius = ("<sdf version='1.6'><model name='ball'><link name='body'><collision "
+                           "name='shell'><geometry><sphere><radius>-1</radius></sphere></geometry>"
+                           "</collision></link></model></sdf>")
+        self.fails("spawn_sdf_model", "link 'body' collision 'shell': <sphere> <radius>: '-1'",
+                   "d", negative_radius, "", Pose(), "")
         self.fails("spawn_urdf_model", "robot_namespace 'tb3-1'", "d", BOX_URDF, "tb3-1",
                    Pose(), "")
         bad_topic = ROTOR_URDF.replace("</robot>", """<gazebo><plugin name="drive"
