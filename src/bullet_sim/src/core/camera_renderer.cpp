@@ -131,7 +131,7 @@ struct CameraRenderer::Impl {
     sim_render::ShapeId id = 0;
   };
   struct RobotScene {
-    const urdf::ModelInterface* model = nullptr;  ///< tells a respawned robot apart
+    int spawn_generation = -1;  ///< tells a respawned robot of the same name apart
     std::vector<Visual> visuals;
     std::vector<std::unique_ptr<sim_render::Renderer>> renderers;  ///< per camera, lazily
     std::vector<size_t> camera_link_hints;
@@ -154,7 +154,7 @@ struct CameraRenderer::Impl {
   }
 
   void addRobot(const std::string& name, const RobotSpec& spec, RobotScene* robot) {
-    robot->model = spec.urdf.get();
+    robot->spawn_generation = sim.spawnGeneration(name);
     robot->renderers.resize(spec.cameras.size());
     robot->camera_link_hints.assign(spec.cameras.size(), 0);
     for (const VisualSpec& v : spec.visuals) {
@@ -188,14 +188,15 @@ struct CameraRenderer::Impl {
       }
     }
     for (const std::string& name : names) {
-      const RobotSpec& spec = sim.robotSpec(name);
       auto it = robots.find(name);
-      if (it != robots.end() && it->second.model == spec.urdf.get()) continue;
+      if (it != robots.end() && it->second.spawn_generation == sim.spawnGeneration(name)) {
+        continue;
+      }
       if (it != robots.end()) {
         dropRobot(&it->second);
         robots.erase(it);
       }
-      addRobot(name, spec, &robots[name]);
+      addRobot(name, sim.robotSpec(name), &robots[name]);
     }
   }
 
