@@ -81,6 +81,9 @@ std::unique_ptr<btConvexHullShape> makeConvexHull(const TriangleMesh& mesh,
     hull = std::move(reduced);
   }
   hull->setMargin(kHullMarginM);
+  // The bounding box is cached with the margin it had when computed (Bullet's default 4 cm
+  // until now) and setMargin does not redo it.
+  hull->recalcLocalAabb();
   return hull;
 }
 
