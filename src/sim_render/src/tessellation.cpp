@@ -11,18 +11,7 @@
 namespace sim_render {
 namespace {
 
-const char* kindName(ShapeKind kind) {
-  switch (kind) {
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Cylinder: return "cylinder";
-    case ShapeKind::Sphere: return "sphere";
-    case ShapeKind::Plane: return "plane";
-    case ShapeKind::Mesh: return "mesh";
-  }
-  return "unknown";
-}
-
-void requirePositive(ShapeKind kind, const char* what, double value) {
+void requirePositive(Geometry::Kind kind, const char* what, double value) {
   if (!(std::isfinite(value) && value > 0.0)) {
     std::ostringstream msg;
     msg << kindName(kind) << " " << what << " must be finite and > 0, got " << value;
@@ -102,8 +91,8 @@ void buildSphere(Mesh& mesh, double radius, int rings, int segments) {
 void buildPlane(Mesh& mesh, const ShapeSpec& spec, const TessellationOptions& options) {
   const bool infinite = spec.size.x() == 0.0 && spec.size.y() == 0.0;
   if (!infinite) {
-    requirePositive(ShapeKind::Plane, "size x", spec.size.x());
-    requirePositive(ShapeKind::Plane, "size y", spec.size.y());
+    requirePositive(Geometry::Plane, "size x", spec.size.x());
+    requirePositive(Geometry::Plane, "size y", spec.size.y());
   }
   const double n_norm = spec.normal.norm();
   if (!(std::isfinite(n_norm) && n_norm > 1e-12)) {
@@ -161,28 +150,28 @@ void buildScaledMesh(Mesh& mesh, const ShapeSpec& spec) {
 Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
   Mesh mesh;
   switch (spec.kind) {
-    case ShapeKind::Box:
+    case Geometry::Box:
       requirePositive(spec.kind, "size x", spec.size.x());
       requirePositive(spec.kind, "size y", spec.size.y());
       requirePositive(spec.kind, "size z", spec.size.z());
       buildBox(mesh, spec.size);
       break;
-    case ShapeKind::Cylinder:
+    case Geometry::Cylinder:
       requirePositive(spec.kind, "radius", spec.size.x());
       requirePositive(spec.kind, "length", spec.size.z());
       requireAtLeast("cylinder_segments", options.cylinder_segments, 3);
       buildCylinder(mesh, spec.size.x(), spec.size.z(), options.cylinder_segments);
       break;
-    case ShapeKind::Sphere:
+    case Geometry::Sphere:
       requirePositive(spec.kind, "radius", spec.size.x());
       requireAtLeast("sphere_rings", options.sphere_rings, 2);
       requireAtLeast("sphere_segments", options.sphere_segments, 3);
       buildSphere(mesh, spec.size.x(), options.sphere_rings, options.sphere_segments);
       break;
-    case ShapeKind::Plane:
+    case Geometry::Plane:
       buildPlane(mesh, spec, options);
       break;
-    case ShapeKind::Mesh:
+    case Geometry::Mesh:
       buildScaledMesh(mesh, spec);
       break;
   }
@@ -192,44 +181,28 @@ Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
   return mesh;
 }
 
+ShapeSpec::ShapeSpec(const Geometry& geometry, const Eigen::Vector4f& colour)
+    : Geometry(geometry), rgba(colour) {}
+
 ShapeSpec ShapeSpec::box(double x_m, double y_m, double z_m, const Eigen::Vector4f& rgba) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Box;
-  s.size = Eigen::Vector3d(x_m, y_m, z_m);
-  s.rgba = rgba;
-  return s;
+  return ShapeSpec(Geometry::box(x_m, y_m, z_m), rgba);
 }
 
 ShapeSpec ShapeSpec::cylinder(double radius_m, double length_m, const Eigen::Vector4f& rgba) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Cylinder;
-  s.size = Eigen::Vector3d(radius_m, radius_m, length_m);
-  s.rgba = rgba;
-  return s;
+  return ShapeSpec(Geometry::cylinder(radius_m, length_m), rgba);
 }
 
 ShapeSpec ShapeSpec::sphere(double radius_m, const Eigen::Vector4f& rgba) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Sphere;
-  s.size = Eigen::Vector3d(radius_m, radius_m, radius_m);
-  s.rgba = rgba;
-  return s;
+  return ShapeSpec(Geometry::sphere(radius_m), rgba);
 }
 
 ShapeSpec ShapeSpec::plane(double size_x_m, double size_y_m, const Eigen::Vector4f& rgba) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Plane;
-  s.size = Eigen::Vector3d(size_x_m, size_y_m, 0);
-  s.rgba = rgba;
-  return s;
+  return ShapeSpec(Geometry::plane(size_x_m, size_y_m), rgba);
 }
 
-ShapeSpec ShapeSpec::mesh(std::shared_ptr<const Mesh> triangles, const Eigen::Vector3d& scale,
-                          const Eigen::Vector4f& rgba) {
-  ShapeSpec s;
-  s.kind = ShapeKind::Mesh;
-  s.size = scale;
-  s.rgba = rgba;
+ShapeSpec ShapeSpec::mesh(std::shared_ptr<const sim_render::Mesh> triangles,
+                          const Eigen::Vector3d& scale, const Eigen::Vector4f& rgba) {
+  ShapeSpec s(Geometry::mesh("", scale), rgba);
   s.triangles = std::move(triangles);
   return s;
 }

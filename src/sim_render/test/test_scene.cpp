@@ -150,7 +150,7 @@ TEST(Scene, AddMoveRecolourRemove) {
   EXPECT_FALSE(scene.remove(a));
   EXPECT_FALSE(scene.contains(a));
   EXPECT_TRUE(scene.contains(b));
-  EXPECT_EQ(scene.shape(b).spec.kind, ShapeKind::Sphere);
+  EXPECT_EQ(scene.shape(b).spec.kind, Geometry::Sphere);
   const ShapeId c = scene.add(ShapeSpec::box(1, 1, 1, kGrey), Eigen::Isometry3d::Identity());
   EXPECT_NE(c, a);  // ids are never reused
   scene.clear();

@@ -53,10 +53,12 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 ///
 /// The world's shapes are turned into triangles once, at construction; each robot's
 /// visuals are added the first time a frame is rendered after it was spawned (and dropped
-/// once it is deleted), so a frame only moves the robots' visuals to their current link
-/// poses and rasterizes. Every robot is drawn, including the one carrying the camera (a
-/// camera inside its own housing does not see it: faces are single-sided). Mesh visuals
-/// are drawn part by part, each part in its own material colour or else the visual's.
+/// once it is deleted; a robot is known by its spawn generation, so one deleted and spawned
+/// again under the same name is drawn as it is now), so a frame only moves the robots'
+/// visuals to their current link poses and rasterizes. Every robot is drawn, including
+/// the one carrying the camera (a camera inside its own housing does not see it: faces are
+/// single-sided). Mesh visuals are drawn part by part, each part in its own material
+/// colour or else the visual's.
 /// Not thread-safe.
 class CameraRenderer {
  public:

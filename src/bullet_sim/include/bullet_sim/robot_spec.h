@@ -10,11 +10,16 @@
 #include <urdf_model/model.h>
 #include <urdf_world/types.h>
 
+#include <sim_render/geometry.h>
+
 #include "bullet_sim/mesh.h"
 #include "bullet_sim/resource_paths.h"
 #include "bullet_sim/types.h"
 
 namespace bullet_sim {
+
+/// The geometry description shared with the renderer (sim_render/geometry.h).
+using Geometry = sim_render::Geometry;
 
 /// Gazebo surface parameters of one link (<gazebo reference="link"><mu1>...).
 struct SurfaceParams {
@@ -75,16 +80,13 @@ struct DiffDriveSpec {
   bool publish_odom_tf = true, publish_wheel_tf = false, publish_wheel_joint_state = false;
 };
 
-/// One URDF <visual>, in its link's frame (for the camera renderer).
-struct VisualSpec {
+/// One URDF <visual>, in its link's frame (for the camera renderer): its geometry (a mesh's
+/// `mesh_uri` is the <mesh filename> as written), link, pose and colour.
+struct VisualSpec : Geometry {
   std::string link;
-  enum Kind { Box, Cylinder, Sphere, Mesh } kind = Box;
   Pose3 pose_in_link;
-  /// box: x y z; cylinder: r r length; sphere: r r r; mesh: its scale x y z
-  Eigen::Vector3d size{0, 0, 0};
   /// The URDF <material> colour; a mesh part with a colour of its own keeps that (as RViz).
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
-  std::string mesh_uri;                       ///< Mesh: the <mesh filename> as written
   std::shared_ptr<const TriangleMesh> mesh;   ///< Mesh: null when it could not be read
 };
 

@@ -63,6 +63,11 @@ class Simulation {
   /// Every model simulated as a robot (the world's movable models first), in spawn order.
   std::vector<std::string> robotNames() const;
   const RobotSpec& robotSpec(const std::string& name) const;
+  /// The number this spawn of `name` was given: every spawn gets the next one (the world's
+  /// movable models count from 0), and none is reused, so a robot deleted and spawned again
+  /// under the same name has a new one. Caches of a robot's build (the camera's drawn
+  /// visuals) key on it, where the address of its spec could be reused.
+  int spawnGeneration(const std::string& name) const;
 
   /// Advances exactly one physics step and returns the sensors whose update
   /// period elapsed at this step. Nothing is computed for them here.

@@ -12,14 +12,11 @@
 
 namespace bullet_sim {
 
-/// One static collision/visual shape of the world.
-struct StaticShape {
-  enum Kind { Box, Cylinder, Sphere, Plane, Mesh } kind = Box;
+/// One static collision/visual shape of the world: its geometry (a mesh's `mesh_uri` is the
+/// SDF <uri> as written), where it stands and what it looks like.
+struct StaticShape : Geometry {
   std::string model, link;
   Pose3 pose;                        ///< world pose of the geometry
-  Eigen::Vector3d size{0, 0, 0};     ///< box: x y z; cylinder: r r length; sphere: r r r;
-                                     ///< plane: size_x size_y 0; mesh: its scale x y z
-  Eigen::Vector3d normal{0, 0, 1};   ///< plane only, in the geometry frame
   /// Mesh only: its triangles (collision: the triangle mesh itself, as the shape is static)
   std::shared_ptr<const TriangleMesh> mesh;
   /// The material colour; a mesh part with a colour of its own in the file keeps that.

@@ -10,16 +10,10 @@
 
 #include "bullet_sim/depth_camera.h"
 #include "bullet_sim/errors.h"
+#include "robot_plan.h"
 
 namespace bullet_sim {
 namespace {
-
-Eigen::Isometry3d toIsometry(const Pose3& pose) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.translate(pose.position);
-  T.rotate(pose.orientation.normalized());
-  return T;
-}
 
 std::string cameraName(const CameraSpec& camera) {
   return "camera '" + camera.name + "' on link '" + camera.link + "'";
@@ -70,47 +64,23 @@ class MeshTriangles {
            std::vector<std::shared_ptr<const sim_render::Mesh>>> parts_;
 };
 
-/// One renderer shape per part of a mesh; a part without a colour of its own takes `rgba`.
-/// A mesh that could not be read (null) has no shapes: the loader already warned.
-std::vector<sim_render::ShapeSpec> meshShapes(const std::shared_ptr<const TriangleMesh>& mesh,
-                                              const Eigen::Vector3d& scale,
-                                              const Eigen::Vector4f& rgba,
-                                              MeshTriangles* triangles) {
+/// The renderer's shapes of a geometry in colour `rgba`: one for a primitive; for a mesh,
+/// whose triangles `mesh` holds, one per part, a part without a colour of its own taking
+/// `rgba`. A mesh that could not be read (null) has none: the loader already warned.
+std::vector<sim_render::ShapeSpec> shapesOf(const Geometry& geometry,
+                                            const std::shared_ptr<const TriangleMesh>& mesh,
+                                            const Eigen::Vector4f& rgba,
+                                            MeshTriangles* triangles) {
+  if (geometry.kind != Geometry::Mesh) return {sim_render::ShapeSpec(geometry, rgba)};
   std::vector<sim_render::ShapeSpec> shapes;
   if (!mesh) return shapes;
   const auto& parts = triangles->of(mesh);
   for (size_t i = 0; i < parts.size(); ++i) {
-    shapes.push_back(
-        sim_render::ShapeSpec::mesh(parts[i], scale, mesh->parts[i].rgba.value_or(rgba)));
+    sim_render::ShapeSpec part(geometry, mesh->parts[i].rgba.value_or(rgba));
+    part.triangles = parts[i];
+    shapes.push_back(std::move(part));
   }
   return shapes;
-}
-
-std::vector<sim_render::ShapeSpec> shapesOf(const StaticShape& s, MeshTriangles* triangles) {
-  using sim_render::ShapeSpec;
-  switch (s.kind) {
-    case StaticShape::Box: return {ShapeSpec::box(s.size.x(), s.size.y(), s.size.z(), s.rgba)};
-    case StaticShape::Cylinder: return {ShapeSpec::cylinder(s.size.x(), s.size.z(), s.rgba)};
-    case StaticShape::Sphere: return {ShapeSpec::sphere(s.size.x(), s.rgba)};
-    case StaticShape::Plane: {
-      ShapeSpec plane = ShapeSpec::plane(s.size.x(), s.size.y(), s.rgba);
-      plane.normal = s.normal;
-      return {plane};
-    }
-    case StaticShape::Mesh: return meshShapes(s.mesh, s.size, s.rgba, triangles);
-  }
-  return {};
-}
-
-std::vector<sim_render::ShapeSpec> shapesOf(const VisualSpec& v, MeshTriangles* triangles) {
-  using sim_render::ShapeSpec;
-  switch (v.kind) {
-    case VisualSpec::Box: return {ShapeSpec::box(v.size.x(), v.size.y(), v.size.z(), v.rgba)};
-    case VisualSpec::Cylinder: return {ShapeSpec::cylinder(v.size.x(), v.size.z(), v.rgba)};
-    case VisualSpec::Sphere: return {ShapeSpec::sphere(v.size.x(), v.rgba)};
-    case VisualSpec::Mesh: return meshShapes(v.mesh, v.size, v.rgba, triangles);
-  }
-  return {};
 }
 
 void toMono(const std::vector<uint8_t>& rgb, std::vector<uint8_t>* mono) {
@@ -161,7 +131,7 @@ struct CameraRenderer::Impl {
     sim_render::ShapeId id = 0;
   };
   struct RobotScene {
-    const urdf::ModelInterface* model = nullptr;  ///< tells a respawned robot apart
+    int spawn_generation = -1;  ///< tells a respawned robot of the same name apart
     std::vector<Visual> visuals;
     std::vector<std::unique_ptr<sim_render::Renderer>> renderers;  ///< per camera, lazily
     std::vector<size_t> camera_link_hints;
@@ -172,7 +142,7 @@ struct CameraRenderer::Impl {
     scene.lighting().direction = world.light_direction;
     scene.lighting().ambient = world.ambient.head<3>();
     for (const StaticShape& s : world.shapes) {
-      for (const sim_render::ShapeSpec& spec : shapesOf(s, &mesh_triangles)) {
+      for (const sim_render::ShapeSpec& spec : shapesOf(s, s.mesh, s.rgba, &mesh_triangles)) {
         try {
           scene.add(spec, toIsometry(s.pose));
         } catch (const std::invalid_argument& e) {
@@ -184,12 +154,12 @@ struct CameraRenderer::Impl {
   }
 
   void addRobot(const std::string& name, const RobotSpec& spec, RobotScene* robot) {
-    robot->model = spec.urdf.get();
+    robot->spawn_generation = sim.spawnGeneration(name);
     robot->renderers.resize(spec.cameras.size());
     robot->camera_link_hints.assign(spec.cameras.size(), 0);
     for (const VisualSpec& v : spec.visuals) {
       const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
-      for (const sim_render::ShapeSpec& shape : shapesOf(v, &mesh_triangles)) {
+      for (const sim_render::ShapeSpec& shape : shapesOf(v, v.mesh, v.rgba, &mesh_triangles)) {
         try {
           robot->visuals.push_back({v.link, 0, T_link_visual, scene.add(shape, T_link_visual)});
         } catch (const std::invalid_argument& e) {
@@ -218,14 +188,15 @@ struct CameraRenderer::Impl {
       }
     }
     for (const std::string& name : names) {
-      const RobotSpec& spec = sim.robotSpec(name);
       auto it = robots.find(name);
-      if (it != robots.end() && it->second.model == spec.urdf.get()) continue;
+      if (it != robots.end() && it->second.spawn_generation == sim.spawnGeneration(name)) {
+        continue;
+      }
       if (it != robots.end()) {
         dropRobot(&it->second);
         robots.erase(it);
       }
-      addRobot(name, spec, &robots[name]);
+      addRobot(name, sim.robotSpec(name), &robots[name]);
     }
   }
 

@@ -14,13 +14,13 @@ constexpr double kSnapMps = 0.01;
 DiffDriveController::DiffDriveController(const DiffDriveSpec& spec, size_t left_joint,
                                          size_t right_joint, double left_max_radps,
                                          double right_max_radps)
-    : spec_(spec), joints_{left_joint, right_joint}, max_radps_{left_max_radps, right_max_radps} {}
+    : spec_(spec),
+      kinematics_{spec.wheel_separation_m, spec.wheel_diameter_m / 2.0},
+      joints_{left_joint, right_joint},
+      max_radps_{left_max_radps, right_max_radps} {}
 
 double DiffDriveController::setCommand(double linear_mps, double angular_radps) {
-  const double radius_m = spec_.wheel_diameter_m / 2.0;
-  const double half_track = spec_.wheel_separation_m / 2.0;
-  const double wheel_radps[2] = {(linear_mps - angular_radps * half_track) / radius_m,
-                                 (linear_mps + angular_radps * half_track) / radius_m};
+  const Eigen::Vector2d wheel_radps = kinematics_.wheelVelocities(linear_mps, angular_radps);
   double scale = 1.0;
   for (int side = 0; side < 2; ++side) {
     if (std::fabs(wheel_radps[side]) > max_radps_[side]) {
@@ -34,10 +34,9 @@ double DiffDriveController::setCommand(double linear_mps, double angular_radps) 
 }
 
 void DiffDriveController::updateMotors(PhysicsRobot* robot, double time_s, double physics_dt_s) {
-  const double radius_m = spec_.wheel_diameter_m / 2.0;
-  const double half_track = spec_.wheel_separation_m / 2.0;
-  const double target[2] = {command_v_ - command_w_ * half_track,
-                            command_v_ + command_w_ * half_track};
+  const double radius_m = kinematics_.wheel_radius_m;
+  // The ramp works on rim speeds (m/s), as wheelAcceleration is given.
+  const Eigen::Vector2d target = kinematics_.wheelVelocities(command_v_, command_w_) * radius_m;
   const double dt = std::max(time_s - last_update_s_, physics_dt_s);
   last_update_s_ = time_s;
   for (int side = 0; side < 2; ++side) {
@@ -54,17 +53,11 @@ void DiffDriveController::updateMotors(PhysicsRobot* robot, double time_s, doubl
 }
 
 void DiffDriveController::integrateEncoder(const PhysicsRobot& robot, double dt_s) {
-  const double radius_m = spec_.wheel_diameter_m / 2.0;
-  const double left = robot.jointVelocity(joints_[0]) * radius_m * dt_s;
-  const double right = robot.jointVelocity(joints_[1]) * radius_m * dt_s;
-  const double mean = (left + right) / 2.0;
-  const double dtheta = (right - left) / spec_.wheel_separation_m;
-  const double mid_heading = encoder_pose_.z() + dtheta / 2.0;
-  encoder_pose_.x() += mean * std::cos(mid_heading);
-  encoder_pose_.y() += mean * std::sin(mid_heading);
-  encoder_pose_.z() += dtheta;
-  encoder_v_ = mean / dt_s;
-  encoder_w_ = dtheta / dt_s;
+  const Eigen::Vector2d base = kinematics_.baseVelocities(robot.jointVelocity(joints_[0]),
+                                                          robot.jointVelocity(joints_[1]));
+  encoder_pose_ = advancePose(encoder_pose_, base[0] * dt_s, base[1] * dt_s);
+  encoder_v_ = base[0];
+  encoder_w_ = base[1];
 }
 
 void DiffDriveController::reset() {

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "bullet_sim/robot_spec.h"
+#include "diff_drive_kinematics.h"
 #include "physics_robot.h"
 
 namespace bullet_sim {
@@ -38,6 +39,7 @@ class DiffDriveController {
 
  private:
   DiffDriveSpec spec_;
+  DiffDriveKinematics kinematics_;
   size_t joints_[2];
   double max_radps_[2];
   double command_v_ = 0, command_w_ = 0;

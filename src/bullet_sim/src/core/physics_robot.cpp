@@ -17,16 +17,6 @@ constexpr double kMotorStiffnessPerS = 20.0;
 /// Largest reference lag a motor keeps (rad).
 constexpr double kMaxMotorLagRad = 0.05;
 
-std::unique_ptr<btCollisionShape> makeShape(const CollisionPlan& c) {
-  switch (c.kind) {
-    case CollisionPlan::Box: return makeBox(c.size);
-    case CollisionPlan::Cylinder: return makeCylinder(c.size);
-    case CollisionPlan::Sphere: return makeSphere(c.size.x());
-    case CollisionPlan::Mesh: return makeConvexHull(*c.mesh, c.size);
-  }
-  return nullptr;
-}
-
 /// With the reference frame on the parent, Bullet's hinge angle and motor
 /// velocity are the child's rotation about the axis, as URDF defines them.
 constexpr bool kAngleOfChildInParent = true;
@@ -75,14 +65,15 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
     body.shape = std::make_unique<btEmptyShape>();
   } else if (single_at_com) {
     // Saves the compound's per-step overhead (the Burger's wheels).
-    body.shape = makeShape(plan.collisions[0]);
+    body.shape = makeCollisionShape(plan.collisions[0], plan.collisions[0].mesh.get(),
+                                    Motion::Moving);
     body.material.child_friction.push_back(plan.collisions[0].friction);
   } else {
     // A robot body has a handful of parts: a linear scan beats a child AABB tree.
     auto compound =
         std::make_unique<btCompoundShape>(false, static_cast<int>(plan.collisions.size()));
     for (const CollisionPlan& c : plan.collisions) {
-      body.children.push_back(makeShape(c));
+      body.children.push_back(makeCollisionShape(c, c.mesh.get(), Motion::Moving));
       compound->addChildShape(toBt(body.T_com_root * c.T_root_geom), body.children.back().get());
       body.material.child_friction.push_back(c.friction);
     }

@@ -1,7 +1,6 @@
 #include "physics_world.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "bullet_convert.h"
 #include "collision_shapes.h"
@@ -12,9 +11,6 @@ namespace bullet_sim {
 namespace {
 
 constexpr double kStaticFriction = 1.0;
-/// How far above a ground plane its bounding box reaches: parts nearer than
-/// this are tested for contact every step.
-constexpr double kGroundSlabM = 0.01;
 
 double frictionOf(const btCollisionObjectWrapper* w, int child_index) {
   const btCollisionObject* obj = w->getCollisionObject();
@@ -30,36 +26,6 @@ bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int
                      const btCollisionObjectWrapper* b, int, int index_b) {
   cp.m_combinedFriction = std::min(frictionOf(a, index_a), frictionOf(b, index_b));
   return true;
-}
-
-/// A ground plane whose bounding box stops just above the plane when its
-/// normal is a world axis: Bullet then skips the parts of a robot (lidar,
-/// poles, plate) that cannot touch the ground instead of testing all of them
-/// every step, and horizontal lidar rays no longer test the ground at all.
-class GroundPlaneShape : public btStaticPlaneShape {
- public:
-  using btStaticPlaneShape::btStaticPlaneShape;
-  void getAabb(const btTransform& t, btVector3& aabb_min, btVector3& aabb_max) const override {
-    btStaticPlaneShape::getAabb(t, aabb_min, aabb_max);
-    const btVector3 n = t.getBasis() * getPlaneNormal();
-    for (int axis = 0; axis < 3; ++axis) {
-      if (std::fabs(std::fabs(n[axis]) - 1.0) > 1e-12) continue;
-      const double surface = t.getOrigin()[axis] + n[axis] * getPlaneConstant();
-      if (n[axis] > 0) aabb_max[axis] = surface + kGroundSlabM;
-      else aabb_min[axis] = surface - kGroundSlabM;
-    }
-  }
-};
-
-std::unique_ptr<btCollisionShape> makeStaticShape(const StaticShape& s) {
-  switch (s.kind) {
-    case StaticShape::Box: return makeBox(s.size);
-    case StaticShape::Cylinder: return makeCylinder(s.size);
-    case StaticShape::Sphere: return makeSphere(s.size.x());
-    case StaticShape::Plane: return std::make_unique<GroundPlaneShape>(toBt(s.normal), 0.0);
-    case StaticShape::Mesh: return makeStaticTriangleMesh(*s.mesh, s.size);
-  }
-  return nullptr;
 }
 
 }  // namespace
@@ -88,7 +54,7 @@ PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
   world_->setForceUpdateAllAabbs(false);
   for (const StaticShape& s : spec.shapes) {
     if (!s.collides) continue;
-    shapes_.push_back(makeStaticShape(s));
+    shapes_.push_back(makeCollisionShape(s, s.mesh.get(), Motion::Static));
     auto obj = std::make_unique<btCollisionObject>();
     obj->setCollisionShape(shapes_.back().get());
     obj->setWorldTransform(toBt(toIsometry(s.pose)));

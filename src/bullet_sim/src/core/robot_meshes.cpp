@@ -4,6 +4,7 @@
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
+#include "description_geometry.h"
 
 namespace bullet_sim {
 namespace {
@@ -21,19 +22,20 @@ std::string scaleText(const Eigen::Vector3d& scale) {
 void loadCollisionMeshes(const UriResolver& resolver, const std::string& base_dir,
                          const std::string& source, const urdf::Link& link, RobotSpec* spec) {
   for (const urdf::CollisionSharedPtr& c : link.collision_array) {
-    if (!c || !c->geometry || c->geometry->type != urdf::Geometry::MESH) continue;
-    const auto& m = static_cast<const urdf::Mesh&>(*c->geometry);
-    const std::string where = source + ": link '" + link.name + "' collision mesh '" +
-                              m.filename + "'";
-    const Eigen::Vector3d scale(m.scale.x, m.scale.y, m.scale.z);
-    if (!usableScale(scale)) {
-      throw LoadError(where + ": scale '" + scaleText(scale) + "' must be finite and non-zero");
+    if (!c || !c->geometry) continue;
+    const Geometry geometry = geometryOf(*c->geometry);
+    if (geometry.kind != Geometry::Mesh) continue;
+    const std::string& uri = geometry.mesh_uri;
+    const std::string where = source + ": link '" + link.name + "' collision mesh '" + uri + "'";
+    if (!usableScale(geometry.size)) {
+      throw LoadError(where + ": scale '" + scaleText(geometry.size) +
+                      "' must be finite and non-zero");
     }
-    if (spec->collision_meshes.count(m.filename)) continue;
+    if (spec->collision_meshes.count(uri)) continue;
     std::string reason;
-    auto mesh = loadMeshUri(resolver, m.filename, base_dir, &reason);
+    auto mesh = loadMeshUri(resolver, uri, base_dir, &reason);
     if (!mesh) throw LoadError(where + ": " + reason);
-    spec->collision_meshes[m.filename] = std::move(mesh);
+    spec->collision_meshes[uri] = std::move(mesh);
   }
 }
 

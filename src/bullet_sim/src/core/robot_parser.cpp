@@ -8,6 +8,7 @@
 
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
+#include "description_geometry.h"
 #include "gazebo_extensions.h"
 #include "robot_parser.h"
 #include "urdf_checks.h"
@@ -45,35 +46,9 @@ void addLinkVisuals(const urdf::Link& link, RobotSpec* spec) {
   for (const urdf::VisualSharedPtr& v : link.visual_array) {
     if (!v || !v->geometry) continue;
     VisualSpec vis;
+    vis.geometry() = geometryOf(*v->geometry);
     vis.link = link.name;
     vis.pose_in_link = toPose(v->origin);
-    switch (v->geometry->type) {
-      case urdf::Geometry::BOX: {
-        const auto& b = static_cast<const urdf::Box&>(*v->geometry);
-        vis.kind = VisualSpec::Box;
-        vis.size = Eigen::Vector3d(b.dim.x, b.dim.y, b.dim.z);
-        break;
-      }
-      case urdf::Geometry::CYLINDER: {
-        const auto& c = static_cast<const urdf::Cylinder&>(*v->geometry);
-        vis.kind = VisualSpec::Cylinder;
-        vis.size = Eigen::Vector3d(c.radius, c.radius, c.length);
-        break;
-      }
-      case urdf::Geometry::SPHERE: {
-        const auto& s = static_cast<const urdf::Sphere&>(*v->geometry);
-        vis.kind = VisualSpec::Sphere;
-        vis.size = Eigen::Vector3d(s.radius, s.radius, s.radius);
-        break;
-      }
-      default: {
-        const auto& m = static_cast<const urdf::Mesh&>(*v->geometry);
-        vis.kind = VisualSpec::Mesh;
-        vis.size = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
-        vis.mesh_uri = m.filename;
-        break;
-      }
-    }
     if (v->material) {
       const urdf::Color& c = v->material->color;
       vis.rgba = Eigen::Vector4f(c.r, c.g, c.b, c.a);

@@ -4,6 +4,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "description_geometry.h"
+
 namespace bullet_sim {
 namespace {
 
@@ -99,38 +101,15 @@ class Planner {
       CollisionPlan col;
       col.T_root_geom = T_root_link * urdfPose(c->origin);
       col.friction = friction;
-      switch (c->geometry->type) {
-        case urdf::Geometry::BOX: {
-          const auto& b = static_cast<const urdf::Box&>(*c->geometry);
-          col.kind = CollisionPlan::Box;
-          col.size = Eigen::Vector3d(b.dim.x, b.dim.y, b.dim.z);
-          break;
+      col.geometry() = geometryOf(*c->geometry);
+      if (col.kind == Geometry::Mesh) {
+        const auto mesh = spec_.collision_meshes.find(col.mesh_uri);
+        if (mesh == spec_.collision_meshes.end()) {
+          plan_.warnings.push_back("link '" + link.name + "': collision mesh '" + col.mesh_uri +
+                                   "' was not loaded: skipped");
+          continue;
         }
-        case urdf::Geometry::CYLINDER: {
-          const auto& cy = static_cast<const urdf::Cylinder&>(*c->geometry);
-          col.kind = CollisionPlan::Cylinder;
-          col.size = Eigen::Vector3d(cy.radius, cy.radius, cy.length);
-          break;
-        }
-        case urdf::Geometry::SPHERE: {
-          const auto& s = static_cast<const urdf::Sphere&>(*c->geometry);
-          col.kind = CollisionPlan::Sphere;
-          col.size = Eigen::Vector3d::Constant(s.radius);
-          break;
-        }
-        case urdf::Geometry::MESH: {
-          const auto& m = static_cast<const urdf::Mesh&>(*c->geometry);
-          const auto mesh = spec_.collision_meshes.find(m.filename);
-          if (mesh == spec_.collision_meshes.end()) {
-            plan_.warnings.push_back("link '" + link.name + "': collision mesh '" + m.filename +
-                                     "' was not loaded: skipped");
-            continue;
-          }
-          col.kind = CollisionPlan::Mesh;
-          col.size = Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z);
-          col.mesh = mesh->second;
-          break;
-        }
+        col.mesh = mesh->second;
       }
       plan_.bodies[body].collisions.push_back(col);
     }

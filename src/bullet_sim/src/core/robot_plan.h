@@ -12,12 +12,10 @@
 
 namespace bullet_sim {
 
-/// One collision shape of a body, in the body's root-link frame.
-struct CollisionPlan {
-  enum Kind { Box, Cylinder, Sphere, Mesh } kind = Box;
-  /// box: x y z; cylinder: r r length; sphere: r r r; mesh: its scale x y z
-  Eigen::Vector3d size{0, 0, 0};
-  std::shared_ptr<const TriangleMesh> mesh;  ///< Mesh only (simulated as its convex hull)
+/// One collision shape of a body, in the body's root-link frame (a mesh is simulated as
+/// its convex hull).
+struct CollisionPlan : Geometry {
+  std::shared_ptr<const TriangleMesh> mesh;  ///< Mesh only
   Eigen::Isometry3d T_root_geom = Eigen::Isometry3d::Identity();
   double friction = 1.0;          ///< from the link's mu1/mu2
 };

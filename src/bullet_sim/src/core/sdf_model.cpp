@@ -11,6 +11,7 @@
 #include <urdf_model/model.h>
 
 #include "bullet_sim/errors.h"
+#include "description_geometry.h"
 #include "robot_parser.h"
 #include "robot_plan.h"
 #include "sdf_util.h"
@@ -285,40 +286,23 @@ class SdfModelConverter {
     return out;
   }
 
+  /// A mesh's file is resolved here, from the folder of the SDF file that names it: the
+  /// URDF model carries the path.
   urdf::GeometrySharedPtr geometry(const sdf::Geometry& g, const std::string& where) const {
     checkGeometrySize(g, where);
-    switch (g.Type()) {
-      case sdf::GeometryType::BOX: {
-        auto box = std::make_shared<urdf::Box>();
-        const auto s = g.BoxShape()->Size();
-        box->dim = urdf::Vector3(s.X(), s.Y(), s.Z());
-        return box;
-      }
-      case sdf::GeometryType::CYLINDER: {
-        auto cylinder = std::make_shared<urdf::Cylinder>();
-        cylinder->radius = g.CylinderShape()->Radius();
-        cylinder->length = g.CylinderShape()->Length();
-        return cylinder;
-      }
-      case sdf::GeometryType::SPHERE: {
-        auto sphere = std::make_shared<urdf::Sphere>();
-        sphere->radius = g.SphereShape()->Radius();
-        return sphere;
-      }
-      case sdf::GeometryType::MESH: {
-        const sdf::Mesh& m = *g.MeshShape();
-        auto mesh = std::make_shared<urdf::Mesh>();
-        const std::string base = std::filesystem::path(m.FilePath()).parent_path().string();
-        const std::string path = resolver_.resolve(m.Uri(), base);
-        mesh->filename = path.empty() ? m.Uri() : path;
-        mesh->scale = urdf::Vector3(m.Scale().X(), m.Scale().Y(), m.Scale().Z());
-        return mesh;
-      }
-      default:
-        throw LoadError(where + ": geometry type '" + geometryName(g.Type()) +
-                        "' is not supported for a movable model (box, cylinder, sphere, " +
-                        "mesh are)");
+    std::optional<Geometry> geometry = geometryOf(g);
+    if (!geometry || geometry->kind == Geometry::Plane) {
+      throw LoadError(where + ": geometry type '" + geometryName(g.Type()) +
+                      "' is not supported for a movable model (box, cylinder, sphere, " +
+                      "mesh are)");
     }
+    if (geometry->kind == Geometry::Mesh) {
+      const std::string base =
+          std::filesystem::path(g.MeshShape()->FilePath()).parent_path().string();
+      const std::string path = resolver_.resolve(geometry->mesh_uri, base);
+      if (!path.empty()) geometry->mesh_uri = path;
+    }
+    return urdfGeometry(*geometry);
   }
 
   /// <surface><friction><ode><mu>/<mu2> of a collision, as the URDF <gazebo> tags give them.

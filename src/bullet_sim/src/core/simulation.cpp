@@ -109,6 +109,8 @@ const RobotSpec& Simulation::robotSpec(const std::string& name) const {
   return impl_->robot(name).spec;
 }
 
+int Simulation::spawnGeneration(const std::string& name) const { return impl_->robot(name).id; }
+
 std::vector<DueSensor> Simulation::step() {
   const double dt = impl_->cfg.physics_step_s;
   const uint64_t k = impl_->steps + 1;

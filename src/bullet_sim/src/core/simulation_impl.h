@@ -25,7 +25,9 @@ namespace bullet_sim {
 
 struct Simulation::Impl {
   struct Robot {
-    int id;  ///< spawn order; rebuilding in this order replays a run exactly
+    /// Spawn generation (Simulation::spawnGeneration), also Bullet's user index of its
+    /// bodies; rebuilding in this order replays a run exactly.
+    int id;
     RobotSpec spec;
     Eigen::Isometry3d T_world_spawn;
     std::unique_ptr<PhysicsRobot> physics;

@@ -5,6 +5,7 @@
 #include "bullet_sim/errors.h"
 #include "bullet_sim/mesh.h"
 #include "bullet_sim/world_spec.h"
+#include "description_geometry.h"
 #include "robot_plan.h"
 #include "sdf_document.h"
 #include "sdf_model.h"
@@ -175,54 +176,28 @@ class WorldReader {
     s.link = link.Name();
     s.pose = toPose3(pose);
     s.collides = collides;
-    switch (geom.Type()) {
-      case sdf::GeometryType::BOX: {
-        const auto size = geom.BoxShape()->Size();
-        s.kind = StaticShape::Box;
-        s.size = Eigen::Vector3d(size.X(), size.Y(), size.Z());
-        break;
-      }
-      case sdf::GeometryType::CYLINDER:
-        s.kind = StaticShape::Cylinder;
-        s.size = Eigen::Vector3d(geom.CylinderShape()->Radius(), geom.CylinderShape()->Radius(),
-                                 geom.CylinderShape()->Length());
-        break;
-      case sdf::GeometryType::SPHERE:
-        s.kind = StaticShape::Sphere;
-        s.size = Eigen::Vector3d::Constant(geom.SphereShape()->Radius());
-        break;
-      case sdf::GeometryType::PLANE: {
-        const auto n = geom.PlaneShape()->Normal();
-        s.kind = StaticShape::Plane;
-        s.size = Eigen::Vector3d(geom.PlaneShape()->Size().X(), geom.PlaneShape()->Size().Y(), 0);
-        s.normal = Eigen::Vector3d(n.X(), n.Y(), n.Z()).normalized();
-        break;
-      }
-      case sdf::GeometryType::MESH:
-        meshShape(model, link, *geom.MeshShape(), collides, &s);
-        break;
-      default:
-        throw LoadError(source_ + ": model '" + model + "' link '" + link.Name() + "' " +
-                        (collides ? "collision" : "visual") + ": geometry type '" +
-                        geometryName(geom.Type()) +
-                        "' is not supported (box, cylinder, sphere, plane, mesh are)");
+    const std::optional<Geometry> geometry = geometryOf(geom);
+    if (!geometry) {
+      throw LoadError(source_ + ": model '" + model + "' link '" + link.Name() + "' " +
+                      (collides ? "collision" : "visual") + ": geometry type '" +
+                      geometryName(geom.Type()) +
+                      "' is not supported (box, cylinder, sphere, plane, mesh are)");
     }
+    s.geometry() = *geometry;
+    if (s.kind == Geometry::Mesh) meshShape(model, link, *geom.MeshShape(), collides, &s);
     return s;
   }
 
-  /// A mesh: its file resolved from the folder of the SDF file that names it. A collision
-  /// mesh that cannot be read is an error, a visual one a warning (not drawn).
+  /// A mesh's triangles: its file resolved from the folder of the SDF file that names it.
+  /// A collision mesh that cannot be read is an error, a visual one a warning (not drawn).
   void meshShape(const std::string& model, const sdf::Link& link, const sdf::Mesh& mesh,
                  bool collides, StaticShape* s) const {
     const std::string where = source_ + ": model '" + model + "' link '" + link.Name() +
                               "' " + (collides ? "collision" : "visual") + " mesh '" +
                               mesh.Uri() + "'";
-    const auto scale = mesh.Scale();
-    s->kind = StaticShape::Mesh;
-    s->size = Eigen::Vector3d(scale.X(), scale.Y(), scale.Z());
     if (!s->size.allFinite() || (s->size.array() == 0).any()) {
       std::ostringstream text;
-      text << scale.X() << " " << scale.Y() << " " << scale.Z();
+      text << s->size.x() << " " << s->size.y() << " " << s->size.z();
       throw LoadError(where + ": <scale> '" + text.str() + "' must be finite and non-zero");
     }
     const std::string defined_in = mesh.FilePath().empty() ? source_ : mesh.FilePath();

@@ -6,61 +6,50 @@
 namespace bullet_sim {
 namespace {
 
-/// Extents of a shape as a marker's scale: the spec sizes are radii for round shapes.
-Eigen::Vector3d roundScale(const Eigen::Vector3d& size, bool sphere) {
-  const double d = 2.0 * size.x();
-  return {d, d, sphere ? d : size.z()};
-}
-
-MarkerShape planeMarker(const StaticShape& s, const PlaneDrawing& planes) {
-  MarkerShape m;
-  m.type = MarkerShape::Cube;
-  const bool infinite = !(s.size.x() > 0 && s.size.y() > 0);
+/// A plane as a thin box: its z axis is the plane's normal, its top face plane_drop_m below
+/// the surface.
+void drawPlane(const Geometry& g, const PlaneDrawing& planes, MarkerShape* m) {
+  m->type = MarkerShape::Cube;
+  const bool infinite = !(g.size.x() > 0 && g.size.y() > 0);
   const double side = planes.infinite_plane_side_m;
-  m.scale_m = {infinite ? side : s.size.x(), infinite ? side : s.size.y(), planes.thickness_m};
-  // The box's z axis is the plane's normal; its centre sits below the plane so its top face
-  // is plane_drop_m under the surface.
+  m->scale_m = {infinite ? side : g.size.x(), infinite ? side : g.size.y(), planes.thickness_m};
   const Eigen::Quaterniond T_geom_box =
-      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), s.normal);
-  const Eigen::Vector3d normal_world = s.pose.orientation * s.normal;
-  m.pose.orientation = (s.pose.orientation * T_geom_box).normalized();
-  m.pose.position =
-      s.pose.position - normal_world * (planes.plane_drop_m + 0.5 * planes.thickness_m);
-  return m;
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), g.normal);
+  const Eigen::Vector3d normal_world = m->pose.orientation * g.normal;
+  m->pose.orientation = (m->pose.orientation * T_geom_box).normalized();
+  m->pose.position -= normal_world * (planes.plane_drop_m + 0.5 * planes.thickness_m);
 }
 
-/// A mesh file drawn at the mesh's scale.
-MarkerShape meshMarker(const TriangleMesh& mesh, const Eigen::Vector3d& scale) {
+/// The marker of a geometry whose frame is at `pose` in the world; `mesh` holds a mesh's
+/// triangles (the marker names its file). The one place a geometry kind becomes a marker
+/// type: the spec sizes are radii for round shapes, a marker's scale their full extents.
+MarkerShape markerOf(const Geometry& g, const TriangleMesh* mesh, const Pose3& pose,
+                     const PlaneDrawing& planes) {
   MarkerShape m;
-  m.type = MarkerShape::Mesh;
-  m.scale_m = scale;
-  m.mesh_resource = "file://" + mesh.path;
-  return m;
-}
-
-MarkerShape shapeMarker(const StaticShape& s, const PlaneDrawing& planes) {
-  MarkerShape m;
-  switch (s.kind) {
-    case StaticShape::Box:
+  m.pose = pose;
+  const double diameter = 2.0 * g.size.x();
+  switch (g.kind) {
+    case Geometry::Box:
       m.type = MarkerShape::Cube;
-      m.scale_m = s.size;
+      m.scale_m = g.size;
       break;
-    case StaticShape::Cylinder:
+    case Geometry::Cylinder:
       m.type = MarkerShape::Cylinder;
-      m.scale_m = roundScale(s.size, false);
+      m.scale_m = {diameter, diameter, g.size.z()};
       break;
-    case StaticShape::Sphere:
+    case Geometry::Sphere:
       m.type = MarkerShape::Sphere;
-      m.scale_m = roundScale(s.size, true);
+      m.scale_m = Eigen::Vector3d::Constant(diameter);
       break;
-    case StaticShape::Plane:
-      m = planeMarker(s, planes);
+    case Geometry::Plane:
+      drawPlane(g, planes, &m);
       break;
-    case StaticShape::Mesh:
-      m = meshMarker(*s.mesh, s.size);
+    case Geometry::Mesh:
+      m.type = MarkerShape::Mesh;
+      m.scale_m = g.size;
+      m.mesh_resource = "file://" + mesh->path;
       break;
   }
-  if (s.kind != StaticShape::Plane) m.pose = s.pose;
   return m;
 }
 
@@ -70,8 +59,8 @@ std::vector<MarkerShape> worldShapeMarkers(const WorldSpec& world, const PlaneDr
   std::vector<MarkerShape> markers;
   std::map<std::string, int> next_id;
   for (const StaticShape& s : world.shapes) {
-    if (s.kind == StaticShape::Mesh && !s.mesh) continue;  // unreadable: warned at load
-    MarkerShape m = shapeMarker(s, planes);
+    if (s.kind == Geometry::Mesh && !s.mesh) continue;  // unreadable: warned at load
+    MarkerShape m = markerOf(s, s.mesh.get(), s.pose, planes);
     m.ns = s.model;
     m.id = next_id[s.model]++;
     m.rgba = s.rgba;
@@ -88,20 +77,11 @@ std::vector<MarkerShape> modelMarkers(const std::string& model, const RobotSpec&
   for (size_t i = 0; i < spec.visuals.size(); ++i) {
     const VisualSpec& v = spec.visuals[i];
     const auto link = T_world_link.find(v.link);
-    if (link == T_world_link.end() || (v.kind == VisualSpec::Mesh && !v.mesh)) continue;
-    MarkerShape m;
-    if (v.kind == VisualSpec::Mesh) {
-      m = meshMarker(*v.mesh, v.size);
-    } else {
-      m.type = v.kind == VisualSpec::Box        ? MarkerShape::Cube
-               : v.kind == VisualSpec::Cylinder ? MarkerShape::Cylinder
-                                                : MarkerShape::Sphere;
-      m.scale_m =
-          v.kind == VisualSpec::Box ? v.size : roundScale(v.size, v.kind == VisualSpec::Sphere);
-    }
+    if (link == T_world_link.end() || (v.kind == Geometry::Mesh && !v.mesh)) continue;
+    const Pose3 pose = toPose3(link->second * toIsometry(v.pose_in_link));
+    MarkerShape m = markerOf(v, v.mesh.get(), pose, PlaneDrawing());
     m.ns = model;
     m.id = static_cast<int>(i);
-    m.pose = toPose3(link->second * toIsometry(v.pose_in_link));
     m.rgba = v.rgba;
     markers.push_back(m);
   }

@@ -1,5 +1,5 @@
-// Simulation's link, joint, external-force and physics-setting methods, on bodies in
-// free space (no ground, set gravity) whose motion is worked out by hand.
+// Simulation's link, joint, external-force, physics-setting and spawn-generation methods,
+// on bodies in free space (no ground, set gravity) whose motion is worked out by hand.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -159,4 +159,22 @@ TEST_F(FreeSpace, NewGravityActsFromTheNextStep) {
   sim.reset();  // a reset rebuilds the world with the gravity set
   run(&sim, 500);
   EXPECT_NEAR(sim.modelTwist("box").linear.z(), -2 * 0.5, 1e-9);
+}
+
+TEST(SpawnGeneration, EverySpawnGetsANumberNeverUsedBefore) {
+  WorldSpec world = freeSpace({0, 0, 0});
+  world.models.push_back({"crate", parseRobot(kBoxUrdf, "crate.urdf"), at(0, 0, 1)});
+  Simulation sim(world, SimConfig());
+  const RobotSpec box = parseRobot(kBoxUrdf, "box.urdf");
+  sim.spawnRobot("box", box, at(1, 0, 1));
+  // The world's movable models first, then the spawns, in order.
+  EXPECT_EQ(sim.spawnGeneration("crate"), 0);
+  EXPECT_EQ(sim.spawnGeneration("box"), 1);
+  ASSERT_TRUE(sim.deleteRobot("box"));
+  sim.spawnRobot("box", box, at(1, 0, 1));
+  EXPECT_EQ(sim.spawnGeneration("box"), 2);
+  sim.reset();  // rebuilds the same spawns: their numbers stay
+  EXPECT_EQ(sim.spawnGeneration("crate"), 0);
+  EXPECT_EQ(sim.spawnGeneration("box"), 2);
+  EXPECT_THROW(sim.spawnGeneration("nobody"), std::out_of_range);
 }

@@ -2,6 +2,8 @@
 /// @brief Description of one renderable primitive and its triangle mesh.
 #pragma once
 
+#include "sim_render/geometry.h"
+
 #include <Eigen/Core>
 
 #include <array>
@@ -21,23 +23,21 @@ struct Mesh {
   double bounding_radius_m = 0;
 };
 
-/// Kinds of shape: four primitives, and triangles given by the caller (a mesh file).
-enum class ShapeKind { Box, Cylinder, Sphere, Plane, Mesh };
-
-/// A primitive in its own frame, with its colour.
+/// A Geometry in its own frame, with its colour, as the renderer draws it.
 ///
-/// `size` follows the simulator's convention: box x y z; cylinder radius radius length (axis
-/// along local z); sphere radius radius radius; plane size_x size_y 0, where size_x = size_y = 0
-/// means an infinite plane. A plane faces `normal` (local frame, default +z) and is seen from
-/// that side only. A mesh is `triangles` (their vertices and triangles; normals and radius
-/// are recomputed) scaled by `size` per axis, seen from the side its triangles wind
-/// counter-clockwise. Colours are linear 0..1; alpha is carried but surfaces are drawn opaque.
-struct ShapeSpec {
-  ShapeKind kind = ShapeKind::Box;
-  Eigen::Vector3d size{1, 1, 1};
-  Eigen::Vector3d normal{0, 0, 1};
+/// A plane is seen from the side its `normal` faces only. A mesh is `triangles` (their
+/// vertices and triangles; normals and radius are recomputed) scaled by `size` per axis, seen
+/// from the side its triangles wind counter-clockwise; its `mesh_uri` is not read here.
+/// Colours are linear 0..1; alpha is carried but surfaces are drawn opaque.
+struct ShapeSpec : Geometry {
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
-  std::shared_ptr<const Mesh> triangles;  ///< Mesh only, shared between shapes
+  /// Mesh only, shared between shapes. (Named with its namespace: in here `Mesh` is the
+  /// inherited Geometry::Mesh kind.)
+  std::shared_ptr<const sim_render::Mesh> triangles;
+
+  ShapeSpec() = default;
+  /// A box, cylinder, sphere or plane (a mesh also needs its triangles: see mesh()).
+  ShapeSpec(const Geometry& geometry, const Eigen::Vector4f& rgba);
 
   static ShapeSpec box(double x_m, double y_m, double z_m, const Eigen::Vector4f& rgba);
   static ShapeSpec cylinder(double radius_m, double length_m, const Eigen::Vector4f& rgba);
@@ -45,8 +45,8 @@ struct ShapeSpec {
   /// size 0 x 0 gives an infinite plane.
   static ShapeSpec plane(double size_x_m, double size_y_m, const Eigen::Vector4f& rgba);
   /// `triangles` scaled by `scale` (x y z; a negative one mirrors).
-  static ShapeSpec mesh(std::shared_ptr<const Mesh> triangles, const Eigen::Vector3d& scale,
-                        const Eigen::Vector4f& rgba);
+  static ShapeSpec mesh(std::shared_ptr<const sim_render::Mesh> triangles,
+                        const Eigen::Vector3d& scale, const Eigen::Vector4f& rgba);
 };
 
 }  // namespace sim_render

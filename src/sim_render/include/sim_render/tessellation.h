@@ -15,7 +15,7 @@ struct TessellationOptions {
   double infinite_plane_half_extent_m = 1e5;
 };
 
-/// Builds the mesh of `spec` (for ShapeKind::Mesh: its triangles scaled). Throws
+/// Builds the mesh of `spec` (for Geometry::Mesh: its triangles scaled). Throws
 /// std::invalid_argument naming the bad value when a size is not finite or not positive
 /// (planes: negative, or only one side zero; meshes: a scale zero or not finite, no
 /// triangles, an index beyond the vertices), or when the options ask for too few segments.
