@@ -66,6 +66,23 @@ std::string baseDirOf(const std::string& source_name) {
   return std::filesystem::path(source_name).parent_path().string();
 }
 
+/// The joints of a URDF document as written, before urdfdom builds (or fails to build) its
+/// tree: a loop that leaves no root link gets only "No root link found" from urdfdom.
+std::vector<JointEdge> jointEdgesOf(const tinyxml2::XMLDocument& urdf) {
+  std::vector<JointEdge> joints;
+  const tinyxml2::XMLElement* robot = urdf.FirstChildElement("robot");
+  for (const tinyxml2::XMLElement* j = robot ? robot->FirstChildElement("joint") : nullptr; j;
+       j = j->NextSiblingElement("joint")) {
+    const tinyxml2::XMLElement* parent = j->FirstChildElement("parent");
+    const tinyxml2::XMLElement* child = j->FirstChildElement("child");
+    const char* name = j->Attribute("name");
+    const char* parent_link = parent ? parent->Attribute("link") : nullptr;
+    const char* child_link = child ? child->Attribute("link") : nullptr;
+    if (name && parent_link && child_link) joints.push_back({name, parent_link, child_link});
+  }
+  return joints;
+}
+
 }  // namespace
 
 RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name) {
@@ -80,6 +97,7 @@ RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name
   if (xml.Parse(urdf_xml.c_str(), urdf_xml.size()) != tinyxml2::XML_SUCCESS) {
     throw LoadError(source_name + ": invalid URDF: not well-formed XML: " + xml.ErrorStr());
   }
+  checkTree(jointEdgesOf(xml), source_name);
   {
     CapturedLog log;
     spec.urdf = urdf::parseURDF(urdf_xml);

@@ -19,47 +19,48 @@ namespace {
 /// exactly on the edge: izz = ixx + iyy).
 constexpr double kTriangleTolerance = 1e-4;
 
-/// urdfdom keys its parent table by child link, so a second parent joint silently replaces
-/// the first: find it from the joints themselves.
-void checkOneParentEach(const urdf::ModelInterface& model, const std::string& source) {
-  std::map<std::string, std::string> parent_joint;  // child link -> joint
-  for (const auto& entry : model.joints_) {
-    const urdf::Joint& joint = *entry.second;
-    const auto seen = parent_joint.emplace(joint.child_link_name, joint.name);
+}  // namespace
+
+void checkTree(const std::vector<JointEdge>& joints, const std::string& source) {
+  std::map<std::string, const JointEdge*> parent_of;  // child link -> its joint
+  for (const JointEdge& joint : joints) {
+    // urdfdom keys its parent table by child link: a second parent joint would silently
+    // replace the first (and can hand back a cycle).
+    const auto seen = parent_of.emplace(joint.child, &joint);
     if (!seen.second) {
-      throw LoadError(source + ": link '" + joint.child_link_name + "' is the child of joints '" +
-                      seen.first->second + "' and '" + joint.name +
+      throw LoadError(source + ": link '" + joint.child + "' is the child of joints '" +
+                      seen.first->second->name + "' and '" + joint.name +
                       "': a URDF is a tree (one parent joint per link)");
+    }
+  }
+  // Walks up from every link; with one parent each, a walk that comes back to a link it
+  // passed is a loop.
+  for (const JointEdge& start_joint : joints) {
+    std::vector<const JointEdge*> path;
+    std::set<std::string> passed{start_joint.child};
+    for (auto up = parent_of.find(start_joint.child); up != parent_of.end();
+         up = parent_of.find(up->second->parent)) {
+      path.push_back(up->second);
+      const std::string& parent = up->second->parent;
+      if (passed.insert(parent).second) continue;
+      // Name the loop only, not the joints below it that the walk started from.
+      const auto loop_start = std::find_if(path.begin(), path.end(), [&](const JointEdge* j) {
+        return j->child == parent;
+      });
+      // Parent to child, from the joint written first (the edges are in document order).
+      std::vector<const JointEdge*> loop(path.rbegin(), std::make_reverse_iterator(loop_start));
+      std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+      std::string names;
+      for (const JointEdge* j : loop) {
+        names += (names.empty() ? "'" : ", '") + j->name + "' (" + j->parent + " -> " + j->child +
+                 ")";
+      }
+      throw LoadError(source + ": joints " + names + " form a loop: a URDF is a tree");
     }
   }
 }
 
-/// Walks up from every link; with one parent each, a walk that comes back to a link it
-/// passed is a loop. urdfdom reports a loop only when it leaves no root link.
-void checkNoLoop(const urdf::ModelInterface& model, const std::string& source) {
-  std::map<std::string, const urdf::Joint*> parent_of;  // child link -> its joint
-  for (const auto& entry : model.joints_) parent_of[entry.second->child_link_name] = entry.second.get();
-  for (const auto& start : model.links_) {
-    std::vector<const urdf::Joint*> path;
-    std::set<std::string> passed{start.first};
-    for (auto up = parent_of.find(start.first); up != parent_of.end();
-         up = parent_of.find(up->second->parent_link_name)) {
-      path.push_back(up->second);
-      const std::string& parent = up->second->parent_link_name;
-      if (passed.insert(parent).second) continue;
-      // Name the loop only, not the joints below it that the walk started from.
-      const auto loop_start = std::find_if(path.begin(), path.end(), [&](const urdf::Joint* j) {
-        return j->child_link_name == parent;
-      });
-      std::string joints;
-      for (auto j = path.rbegin(); j != std::make_reverse_iterator(loop_start); ++j) {
-        joints += (joints.empty() ? "'" : ", '") + (*j)->name + "' (" + (*j)->parent_link_name +
-                  " -> " + (*j)->child_link_name + ")";
-      }
-      throw LoadError(source + ": joints " + joints + " form a loop: a URDF is a tree");
-    }
-  }
-}
+namespace {
 
 bool validSize(double v) { return v >= 0 && std::isfinite(v); }
 
@@ -122,8 +123,12 @@ void checkInertial(const urdf::Inertial& in, const std::string& link_where) {
 }
 
 void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source) {
-  checkOneParentEach(model, source);
-  checkNoLoop(model, source);
+  std::vector<JointEdge> joints;
+  for (const auto& entry : model.joints_) {
+    const urdf::Joint& joint = *entry.second;
+    joints.push_back({joint.name, joint.parent_link_name, joint.child_link_name});
+  }
+  checkTree(joints, source);
   for (const auto& entry : model.links_) {
     const urdf::Link& link = *entry.second;
     if (link.inertial) checkInertial(*link.inertial, source + ": link '" + link.name + "'");

@@ -2,6 +2,7 @@
 #define BULLET_SIM_CORE_URDF_CHECKS_H
 
 #include <string>
+#include <vector>
 
 #include <urdf_model/model.h>
 
@@ -15,6 +16,17 @@ namespace bullet_sim {
 /// radius or length, or sphere radius.
 /// @throws LoadError naming `source`, the link or joints and the values.
 void checkUrdfModel(const urdf::ModelInterface& model, const std::string& source);
+
+/// A joint as the tree sees it: its name, parent link and child link.
+struct JointEdge {
+  std::string name, parent, child;
+};
+
+/// That the joints make a tree: no link is the child of two joints, and no joints close a
+/// loop (urdfdom reports a loop only when it leaves no root link).
+/// @throws LoadError naming `source`, the link's two joints, or the loop's joints in order,
+/// parent -> child.
+void checkTree(const std::vector<JointEdge>& joints, const std::string& source);
 
 /// The mass and inertia check of checkUrdfModel for one link (SDF models converted to URDF
 /// links use it too). `link_where` starts the message ("file: link 'base'").

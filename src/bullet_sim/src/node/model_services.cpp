@@ -21,10 +21,18 @@ enum class ModelFormat { Urdf, Sdf, Unknown };
 
 /// What the document's root element says it is (<robot>: URDF; <sdf>, or <gazebo> as
 /// old SDF files start: SDF).
-ModelFormat formatOf(const std::string& xml) {
+/// URDF or SDF by the root element; `why` says what else the text is.
+ModelFormat formatOf(const std::string& xml, std::string* why) {
   tinyxml2::XMLDocument doc;
-  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS || !doc.RootElement())
+  if (xml.empty()) {
+    *why = "it is empty";
     return ModelFormat::Unknown;
+  }
+  if (doc.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS || !doc.RootElement()) {
+    *why = std::string("it is not well-formed XML: ") + doc.ErrorStr();
+    return ModelFormat::Unknown;
+  }
+  *why = "its root element is <" + std::string(doc.RootElement()->Name()) + ">";
   const std::string root = doc.RootElement()->Name();
   if (root == "robot") return ModelFormat::Urdf;
   if (root == "sdf" || root == "gazebo") return ModelFormat::Sdf;
@@ -98,11 +106,11 @@ std::string ModelServices::spawnModel(const gazebo_msgs::SpawnModel::Request& re
   const std::optional<bullet_sim::EntityState> frame =
       runner_.sim().frameState(req.reference_frame);
   if (!frame) return unknownFrame("reference_frame", req.reference_frame);
-  const ModelFormat format = formatOf(req.model_xml);
+  std::string why;
+  const ModelFormat format = formatOf(req.model_xml, &why);
   if (format == ModelFormat::Unknown) {
     return "model_xml of " + inQuotes(req.model_name) +
-           " is neither URDF (<robot>) nor SDF (<sdf>): " +
-           (req.model_xml.empty() ? "it is empty" : "it does not parse as either");
+           " is neither URDF (<robot>) nor SDF (<sdf>): " + why;
   }
   if (format == ModelFormat::Sdf && isStaticSdf(req.model_xml)) {
     return "model " + inQuotes(req.model_name) +

@@ -55,7 +55,7 @@ TEST(BadUrdf, JointLoopBesideTheTreeNamesItsJoints) {
 TEST(BadUrdf, LinkWithTwoParentJointsNamesBoth) {
   // urdfdom keeps one parent and hands back a cycle, which used to overflow the stack.
   const RobotError e("urdf_two_parents.urdf");
-  EXPECT_EQ(e.text, e.path + ": link 'arm_a' is the child of joints 'b_to_a' and 'base_a': a "
+  EXPECT_EQ(e.text, e.path + ": link 'arm_a' is the child of joints 'base_a' and 'b_to_a': a "
                              "URDF is a tree (one parent joint per link)");
 }
 

@@ -60,7 +60,7 @@ class BadInput(unittest.TestCase):
                                 "robot_description:=/two_parents_description")
         self.assertEqual(code, 1, output)
         self.assertFailsWith(code, output, "robot_description: link 'arm_a' is the child of "
-                             "joints 'b_to_a' and 'base_a'")
+                             "joints 'base_a' and 'b_to_a'")
 
     def test_world_with_a_negative_box_size(self):
         world = os.path.join(CORE_FIXTURES, "world_negative_box_size.world")

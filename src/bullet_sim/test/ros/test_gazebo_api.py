@@ -108,7 +108,11 @@ class GazeboApi(unittest.TestCase):
         self.assertPose(self.ok("get_model_state", "c", "").pose, 1 + x, 2 + y, 3, 0.6)
         self.fails("spawn_urdf_model", "already exists", "c", BOX_URDF, "", Pose(), "")
         self.fails("spawn_urdf_model", "'nowhere'", "d", BOX_URDF, "", Pose(), "nowhere")
-        self.fails("spawn_urdf_model", "neither URDF", "d", "<robot", "", Pose(), "")
+        response = self.fails("spawn_urdf_model", "neither URDF", "d", "<robot", "", Pose(), "")
+        self.assertIn("not well-formed XML", response.status_message)
+        self.assertIn("Line number=1", response.status_message)  # tinyxml2 says where
+        self.fails("spawn_urdf_model", "its root element is <html>", "d", "<html/>", "", Pose(),
+                   "")
         self.fails("spawn_urdf_model", "initial_pose position.z", "d", BOX_URDF, "",
                    yaw_pose(0, 0, NAN), "")
         self.fails("spawn_sdf_model", "is <static>", "d", SDF_STATIC_BOX, "", Pose(), "")
