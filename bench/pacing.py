@@ -12,6 +12,8 @@ Usage: pacing.py [--seconds 60] [--no-gui]   (BENCH_ROS_PORT, default 11466)
 import argparse
 import os
 import shutil
+import signal
+import subprocess
 import sys
 import threading
 import time
@@ -75,7 +77,9 @@ def main():
                   "roundTrack_simulation.launch", "gui:=%s" % str(gui).lower()]
         if gui:
             launch = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"] + launch
-        roslaunch = procs.start(launch, env)
+        # A session of its own: xvfb-run does not pass SIGINT on to roslaunch, so the
+        # whole group gets it at the end (roslaunch then stops RViz and the nodes).
+        roslaunch = procs.start(launch, env, start_new_session=True)
         rospy.init_node("bench_pacing", anonymous=True, disable_signals=True)
         rospy.Subscriber("/clock", Clock, samples.on_clock, queue_size=100)
         rospy.Subscriber("/camera/image_raw", Image, samples.on_image, queue_size=1,
@@ -99,6 +103,11 @@ def main():
         rviz_alive = gui and ros_bench.process_named(
             ros_bench.descendants(roslaunch.pid), "rviz") == rviz
         rospy.signal_shutdown("measured")
+        os.killpg(roslaunch.pid, signal.SIGINT)
+        try:
+            roslaunch.wait(timeout=20)
+        except subprocess.TimeoutExpired:
+            os.killpg(roslaunch.pid, signal.SIGKILL)
     if len(clock) < 2 or len(frames) < 2:
         sys.exit("pacing: %d /clock messages and %d camera frames in the window"
                  % (len(clock), len(frames)))
