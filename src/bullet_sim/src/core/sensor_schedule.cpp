@@ -54,8 +54,25 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
 
 void SensorSchedule::collectDue(uint64_t k, double dt_s, std::vector<DueSensor>* due) const {
   for (const Entry& e : entries_) {
-    if (periodElapsed(k, dt_s, e.rate_hz)) due->push_back({robot_, e.kind, e.index});
+    if (k > e.origin && periodElapsed(k - e.origin, dt_s, e.rate_hz)) {
+      due->push_back({robot_, e.kind, e.index});
+    }
   }
+}
+
+void SensorSchedule::startAfter(uint64_t spawn_step, double dt_s) {
+  for (Entry& e : entries_) {
+    if (e.kind != SensorKind::Ray && e.kind != SensorKind::Camera) continue;
+    if (e.rate_hz <= 0) continue;  // every step anyway
+    // The first step whose period ends, counted from step 0.
+    uint64_t first = 1;
+    while (!periodElapsed(first, dt_s, e.rate_hz)) ++first;
+    e.origin = spawn_step + 1 > first ? spawn_step + 1 - first : 0;
+  }
+}
+
+void SensorSchedule::restart() {
+  for (Entry& e : entries_) e.origin = 0;
 }
 
 }  // namespace bullet_sim

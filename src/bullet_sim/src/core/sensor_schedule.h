@@ -35,11 +35,20 @@ class SensorSchedule {
   /// Appends the sensors whose period ended with step k.
   void collectDue(uint64_t k, double dt_s, std::vector<DueSensor>* due) const;
 
+  /// A robot spawned after world step `spawn_step` (the steps already taken): its rays and
+  /// cameras measure first with the next step when the world has run one of their periods
+  /// by then, as Gazebo's sensors do (their last update counts from world time 0), and
+  /// every period after that. Sensors of a robot spawned earlier keep world-time phase.
+  void startAfter(uint64_t spawn_step, double dt_s);
+  /// World time starts again (a world reset): every period counts from step 0.
+  void restart();
+
  private:
   struct Entry {
     SensorKind kind;
     size_t index;
     double rate_hz;
+    uint64_t origin = 0;  ///< the step its periods count from
   };
   std::string robot_;
   std::vector<Entry> entries_;

@@ -86,6 +86,7 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
   }
   r->imus.resize(spec.imus.size());
   r->schedule = SensorSchedule(name, spec, joint_state_rate_hz);
+  r->schedule.startAfter(impl_->steps, impl_->cfg.physics_step_s);
   impl_->seedSensors(name, r.get());
   ++impl_->next_robot_id;
   impl_->robots[name] = std::move(r);
@@ -156,6 +157,7 @@ void Simulation::reset() {
     r.physics = std::make_unique<PhysicsRobot>(impl_->physics->dynamics(), r.id,
                                                planRobot(r.spec), r.T_world_spawn);
     if (r.drive) r.drive->reset();
+    r.schedule.restart();
     impl_->seedSensors(entry.second.first, &r);
   }
   impl_->steps = 0;

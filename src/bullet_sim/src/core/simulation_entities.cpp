@@ -150,6 +150,7 @@ void Simulation::setPhysicsStep(double step_s) {
   impl_->epoch_s = timeS();
   impl_->steps = 0;
   impl_->cfg.physics_step_s = step_s;
+  for (auto& r : impl_->robots) r.second->schedule.restart();  // phases count from here
 }
 
 Eigen::Vector3d Simulation::gravity() const { return impl_->world.gravity; }

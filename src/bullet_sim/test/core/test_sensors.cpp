@@ -152,3 +152,60 @@ TEST(Lidar, SeesAnotherRobot) {
   run(&sim, 10);
   EXPECT_TRUE(std::isinf(sim.readRay("burger", 0).ranges[0]));
 }
+
+namespace {
+
+/// The world steps (1-based, 1 kHz) at which each kind of the robot's readings fell due.
+std::map<SensorKind, std::vector<int>> dueSteps(Simulation* sim, int from_step, int to_step) {
+  std::map<SensorKind, std::vector<int>> steps;
+  for (int k = from_step; k <= to_step; ++k) {
+    for (const DueSensor& due : sim->step()) steps[due.kind].push_back(k);
+  }
+  return steps;
+}
+
+}  // namespace
+
+TEST(SensorPhase, ARobotInTheWorldFromTheStartMeasuresAfterOnePeriod) {
+  // Gazebo's sensors count their last update from world time 0: lidar (5 Hz) first at
+  // 0.2 s, camera (30 Hz) first at the step where 1/30 s has passed (step 34).
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  auto steps = dueSteps(&sim, 1, 450);
+  EXPECT_EQ(steps[SensorKind::Ray], (std::vector<int>{200, 400}));
+  EXPECT_EQ(steps[SensorKind::Camera].front(), 34);
+}
+
+TEST(SensorPhase, ARobotSpawnedIntoARunningWorldMeasuresAtOnce) {
+  // Spawned after 0.5 s of world time, more than a lidar period: the lidar and the camera
+  // measure with the first step after the spawn (501), then every period from there; the
+  // IMU plugin and the diff drive keep world-time phase (every 5 and 33.3 steps).
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  for (int k = 1; k <= 500; ++k) sim.step();
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  auto steps = dueSteps(&sim, 501, 950);
+  EXPECT_EQ(steps[SensorKind::Ray], (std::vector<int>{501, 701, 901}));
+  ASSERT_GE(steps[SensorKind::Camera].size(), 3u);
+  EXPECT_EQ(steps[SensorKind::Camera][0], 501);
+  EXPECT_EQ(steps[SensorKind::Camera][1], 534);  // 1/30 s = 33.3 steps after the first
+  EXPECT_EQ(steps[SensorKind::Camera][2], 567);
+  EXPECT_EQ(steps[SensorKind::Imu].front(), 505);
+  EXPECT_EQ(steps[SensorKind::Odometry].front(), 534);  // 16/30 s = 533.3 ms
+}
+
+TEST(SensorPhase, ARobotSpawnedWithinTheFirstPeriodWaitsForItsEnd) {
+  // Spawned at 0.05 s: the lidar's first period, counted from world time 0, ends at 0.2 s.
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  for (int k = 1; k <= 50; ++k) sim.step();
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  EXPECT_EQ(dueSteps(&sim, 51, 450)[SensorKind::Ray], (std::vector<int>{200, 400}));
+}
+
+TEST(SensorPhase, AResetWorldCountsFromZeroAgain) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  for (int k = 1; k <= 500; ++k) sim.step();
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  sim.step();
+  sim.reset();
+  EXPECT_EQ(dueSteps(&sim, 1, 450)[SensorKind::Ray], (std::vector<int>{200, 400}));
+}
