@@ -7,16 +7,18 @@
 
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 
+#include "depth_fixture.h"
 #include "bullet_sim/camera_renderer.h"
 #include "bullet_sim/depth_camera.h"
 #include "bullet_sim/simulation.h"
 
 namespace {
+
+using bullet_sim_test::depthFixtureText;
+using bullet_sim_test::depthFixtureWith;
 
 using bullet_sim::DepthImageData;
 using bullet_sim::ImageData;
@@ -40,21 +42,6 @@ struct Box {
 const Box kWall{{3.05, -0.25, 1.0}, {0.1, 2.5, 2.0}, 0.0};
 const Box kCrate{{1.5, 0.3, 0.35}, {0.4, 0.3, 0.5}, 0.4};
 
-std::string fixtureText() {
-  std::ifstream in(std::string(BULLET_SIM_FIXTURES) + "/depth_camera_robot.urdf");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-/// The fixture with one piece of text replaced (it must be there).
-std::string fixtureWith(const std::string& from, const std::string& to) {
-  std::string text = fixtureText();
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
 
 Eigen::Matrix3d yawMatrix(double yaw) { return Eigen::AngleAxisd(yaw, Vector3d::UnitZ()).matrix(); }
 
@@ -145,7 +132,7 @@ int expectDepthsMatch(const Frame& frame, double far_m, double cutoff_m, double 
 }
 
 TEST(DepthCamera, EveryPixelIsTheDistanceAlongTheOpticalAxisOrNaN) {
-  const Frame frame = renderFixture(fixtureText());
+  const Frame frame = renderFixture(depthFixtureText());
   EXPECT_EQ(frame.depth.frame_id, "camera_depth_optical_frame");
   const int hits = expectDepthsMatch(frame, 8.0, 0.1, 6.0);
   // Both the wall and the crate are in view, and sky is left over (NaN).
@@ -156,24 +143,24 @@ TEST(DepthCamera, EveryPixelIsTheDistanceAlongTheOpticalAxisOrNaN) {
 }
 
 TEST(DepthCamera, BeyondTheFarClipNothingIsHit) {
-  const Frame frame = renderFixture(fixtureWith("<far>8.0</far>", "<far>2.5</far>"));
+  const Frame frame = renderFixture(depthFixtureWith("<far>8.0</far>", "<far>2.5</far>"));
   const int hits = expectDepthsMatch(frame, 2.5, 0.1, 6.0);
   EXPECT_GT(hits, 100);  // the crate alone
 }
 
 TEST(DepthCamera, DepthsOutsideTheCutoffsAreNaN) {
   const Frame frame = renderFixture(
-      fixtureWith("<pointCloudCutoffMax>6.0</pointCloudCutoffMax>",
+      depthFixtureWith("<pointCloudCutoffMax>6.0</pointCloudCutoffMax>",
                   "<pointCloudCutoffMax>2.0</pointCloudCutoffMax>"));
   const int hits = expectDepthsMatch(frame, 8.0, 0.1, 2.0);
   EXPECT_GT(hits, 100);
-  const Frame near_cut = renderFixture(fixtureWith("<pointCloudCutoff>0.1</pointCloudCutoff>",
+  const Frame near_cut = renderFixture(depthFixtureWith("<pointCloudCutoff>0.1</pointCloudCutoff>",
                                                    "<pointCloudCutoff>2.0</pointCloudCutoff>"));
   EXPECT_GT(expectDepthsMatch(near_cut, 8.0, 2.0, 6.0), 100);  // the wall alone
 }
 
 TEST(DepthCamera, PointsAreDepthTimesInverseKAndLieOnTheSurfaceHit) {
-  const Frame frame = renderFixture(fixtureText());
+  const Frame frame = renderFixture(depthFixtureText());
   bullet_sim::PointCloudData cloud;
   bullet_sim::makePointCloud(frame.camera, frame.depth, frame.image, &cloud);
   ASSERT_EQ(cloud.width, kWidth);
@@ -208,7 +195,7 @@ TEST(DepthCamera, PointsAreDepthTimesInverseKAndLieOnTheSurfaceHit) {
 }
 
 TEST(DepthCamera, ARenderWithDepthOfAPlainCameraIsRefused) {
-  const std::string plain = fixtureWith("type=\"depth\"", "type=\"camera\"");
+  const std::string plain = depthFixtureWith("type=\"depth\"", "type=\"camera\"");
   const std::string urdf = plain.substr(0, plain.find("libgazebo_ros_openni_kinect.so")) +
                            "libgazebo_ros_camera.so" +
                            plain.substr(plain.find("libgazebo_ros_openni_kinect.so") + 30);

@@ -4,15 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <functional>
-#include <sstream>
 #include <string>
 
+#include "depth_fixture.h"
 #include "bullet_sim/errors.h"
 #include "bullet_sim/robot_spec.h"
 
 namespace {
+
+using bullet_sim_test::depthFixtureText;
+using bullet_sim_test::depthFixtureWith;
 
 using bullet_sim::CameraSpec;
 using bullet_sim::LoadError;
@@ -25,20 +27,6 @@ const std::string kWhere = std::string(kSource) +
 const std::string kPluginWhere =
     kWhere + " <plugin filename=\"libgazebo_ros_openni_kinect.so\">";
 
-std::string fixtureText() {
-  std::ifstream in(std::string(BULLET_SIM_FIXTURES) + "/depth_camera_robot.urdf");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string fixtureWith(const std::string& from, const std::string& to) {
-  std::string text = fixtureText();
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
 
 std::string loadErrorOf(const std::string& urdf) {
   try {
@@ -51,14 +39,14 @@ std::string loadErrorOf(const std::string& urdf) {
 
 /// The fixture with the plugin's parameters from <cameraName> to <updateRate> left out.
 std::string withoutPluginParameters(const std::string& file) {
-  std::string text = fixtureWith("libgazebo_ros_openni_kinect.so", file);
+  std::string text = depthFixtureWith("libgazebo_ros_openni_kinect.so", file);
   const size_t from = text.find("        <cameraName>");
   const size_t to = text.find("      </plugin>");
   return text.erase(from, to - from);
 }
 
 TEST(DepthSpec, TheKinectPluginsParametersAreRead) {
-  const RobotSpec spec = parseRobot(fixtureText(), kSource);
+  const RobotSpec spec = parseRobot(depthFixtureText(), kSource);
   ASSERT_EQ(spec.cameras.size(), 1u);
   const CameraSpec& c = spec.cameras[0];
   EXPECT_EQ(c.name, "kinect");
@@ -109,7 +97,7 @@ TEST(DepthSpec, TheDepthCameraPluginHasNoUpperCutoff) {
   EXPECT_TRUE(std::isinf(c.depth->cutoff_max_m));
 
   const RobotSpec with_max = parseRobot(
-      fixtureWith("libgazebo_ros_openni_kinect.so", "libgazebo_ros_depth_camera.so"), kSource);
+      depthFixtureWith("libgazebo_ros_openni_kinect.so", "libgazebo_ros_depth_camera.so"), kSource);
   ASSERT_EQ(with_max.warnings.size(), 1u);
   EXPECT_EQ(with_max.warnings[0],
             "<gazebo reference=\"camera_link\"> <sensor name=\"kinect\"> <plugin "
@@ -120,7 +108,7 @@ TEST(DepthSpec, TheDepthCameraPluginHasNoUpperCutoff) {
 
 TEST(DepthSpec, ADepthSensorWithAnotherPluginIsLeftOutWithAWarning) {
   const RobotSpec spec = parseRobot(
-      fixtureWith("libgazebo_ros_openni_kinect.so", "libgazebo_ros_camera.so"), kSource);
+      depthFixtureWith("libgazebo_ros_openni_kinect.so", "libgazebo_ros_camera.so"), kSource);
   EXPECT_TRUE(spec.cameras.empty());
   ASSERT_EQ(spec.warnings.size(), 1u);
   EXPECT_EQ(spec.warnings[0], "plugin 'libgazebo_ros_camera.so' in depth sensor 'kinect' on "
@@ -155,12 +143,12 @@ TEST(DepthSpec, EveryBadValueIsALoadErrorNamingSensorElementAndValue) {
        kWhere + " <plugin> <updateRate>: 'fast' is not a number"},
   };
   for (const BadValue& c : cases) {
-    EXPECT_EQ(loadErrorOf(fixtureWith(c.from, c.to)), c.message) << c.to;
+    EXPECT_EQ(loadErrorOf(depthFixtureWith(c.from, c.to)), c.message) << c.to;
   }
 }
 
 TEST(DepthSpec, ADepthSensorWithoutCameraIsALoadError) {
-  std::string text = fixtureText();
+  std::string text = depthFixtureText();
   const size_t from = text.find("      <camera>");
   const size_t to = text.find("</camera>") + std::string("</camera>\n").size();
   text.erase(from, to - from);
