@@ -42,7 +42,6 @@ struct Box {
 const Box kWall{{3.05, -0.25, 1.0}, {0.1, 2.5, 2.0}, 0.0};
 const Box kCrate{{1.5, 0.3, 0.35}, {0.4, 0.3, 0.5}, 0.4};
 
-
 Eigen::Matrix3d yawMatrix(double yaw) { return Eigen::AngleAxisd(yaw, Vector3d::UnitZ()).matrix(); }
 
 StaticShape shapeOf(const Box& box, const std::string& name) {

@@ -27,7 +27,6 @@ const std::string kWhere = std::string(kSource) +
 const std::string kPluginWhere =
     kWhere + " <plugin filename=\"libgazebo_ros_openni_kinect.so\">";
 
-
 std::string loadErrorOf(const std::string& urdf) {
   try {
     parseRobot(urdf, kSource);
