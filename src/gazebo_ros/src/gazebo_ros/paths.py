@@ -17,15 +17,19 @@ EXPORTS = (
 )
 
 
-def exported_paths(attrib, rospack=('rospack',)):
-    """The values of `<gazebo_ros ATTRIB="..."/>` of every package that depends on
-    gazebo_ros, in rospack's order, `${prefix}` already expanded by rospack."""
+def _start_rospack(attrib, rospack):
     try:
-        out = subprocess.run(list(rospack) + ['plugins', '--attrib=' + attrib, 'gazebo_ros'],
-                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                             universal_newlines=True, check=False).stdout
+        return subprocess.Popen(list(rospack) + ['plugins', '--attrib=' + attrib, 'gazebo_ros'],
+                                stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                                universal_newlines=True)
     except OSError:
+        return None
+
+
+def _paths_of(process):
+    if process is None:
         return []
+    out = process.communicate()[0]
     paths = []
     for line in out.splitlines():
         _, _, value = line.strip().partition(' ')
@@ -34,6 +38,12 @@ def exported_paths(attrib, rospack=('rospack',)):
             if path and path not in paths:
                 paths.append(path)
     return paths
+
+
+def exported_paths(attrib, rospack=('rospack',)):
+    """The values of `<gazebo_ros ATTRIB="..."/>` of every package that depends on
+    gazebo_ros, in rospack's order, `${prefix}` already expanded by rospack."""
+    return _paths_of(_start_rospack(attrib, rospack))
 
 
 def split(value):
@@ -45,9 +55,11 @@ def gazebo_environment(env, share_dir, rospack=('rospack',)):
     package's own folder (for `worlds/...` names). Entries already set come first, as
     in Gazebo."""
     env = dict(env)
-    for attrib, variable in EXPORTS:
+    # Each rospack crawls the packages; the three run side by side.
+    running = [_start_rospack(attrib, rospack) for attrib, _ in EXPORTS]
+    for (_, variable), process in zip(EXPORTS, running):
         paths = split(env.get(variable))
-        for path in exported_paths(attrib, rospack):
+        for path in _paths_of(process):
             if path not in paths:
                 paths.append(path)
         if variable == 'GAZEBO_RESOURCE_PATH' and share_dir not in paths:
