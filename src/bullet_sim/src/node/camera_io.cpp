@@ -55,7 +55,8 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
   return msg;
 }
 
-CameraIo::CameraIo(const bullet_sim::Simulation& sim) : sim_(sim), renderer_(sim) {
+CameraIo::CameraIo(const bullet_sim::Simulation& sim, PublishQueue& queue)
+    : sim_(sim), queue_(queue), renderer_(sim), depth_(queue) {
   logNewRendererWarnings();
 }
 
@@ -100,7 +101,7 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
   }
   const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
   if (info_wanted) {
-    topics.info.publish(toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
+    queue_.publish(topics.info, toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
   }
   depth_.publishInfo(due.robot, due.index, camera, sim_.timeS());
   if (!image_wanted && !depth_wanted) return;
@@ -113,7 +114,7 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
     if (!image_wanted) return;
     sensor_msgs::ImagePtr image = toMsg(&frame);
     image->header.frame_id = topics.frame_id;
-    topics.image.publish(image);
+    queue_.publish(topics.image, std::move(image));
   } catch (const std::exception& error) {
     ROS_ERROR_THROTTLE(5.0, "robot %s: camera '%s' not rendered: %s", due.robot.c_str(),
                        camera.name.c_str(), error.what());

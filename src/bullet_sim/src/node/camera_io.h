@@ -5,6 +5,7 @@
 #include <bullet_sim/simulation.h>
 
 #include "depth_camera_io.h"
+#include "publish_queue.h"
 
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
@@ -31,8 +32,8 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
 /// colour image and its depth topics (DepthCameraIo) alike.
 class CameraIo {
  public:
-  /// `sim` must outlive this object.
-  explicit CameraIo(const bullet_sim::Simulation& sim);
+  /// `sim` and `queue` (which the messages leave through) must outlive this object.
+  CameraIo(const bullet_sim::Simulation& sim, PublishQueue& queue);
   CameraIo(const CameraIo&) = delete;
   CameraIo& operator=(const CameraIo&) = delete;
 
@@ -55,6 +56,7 @@ class CameraIo {
   void logNewRendererWarnings();
 
   const bullet_sim::Simulation& sim_;
+  PublishQueue& queue_;
   bullet_sim::CameraRenderer renderer_;
   DepthCameraIo depth_;  ///< the depth topics of the depth cameras among them
   std::map<std::string, std::vector<Topics>> cameras_;  ///< per robot, by camera index

@@ -102,7 +102,7 @@ void DepthCameraIo::publishInfo(const std::string& robot, size_t index,
                                 const bullet_sim::CameraSpec& camera, double time_s) {
   if (!infoWanted(robot, index)) return;
   const Topics& topics = *find(robot, index);
-  topics.info.publish(toMsg(bullet_sim::cameraInfo(camera, time_s), topics.frame_id));
+  queue_.publish(topics.info, toMsg(bullet_sim::cameraInfo(camera, time_s), topics.frame_id));
 }
 
 void DepthCameraIo::publish(const std::string& robot, size_t index,
@@ -115,12 +115,12 @@ void DepthCameraIo::publish(const std::string& robot, size_t index,
     bullet_sim::makePointCloud(camera, *depth, image, &cloud);
     sensor_msgs::PointCloud2Ptr msg = toMsg(&cloud);
     msg->header.frame_id = topics->frame_id;
-    topics->points.publish(msg);
+    queue_.publish(topics->points, std::move(msg));
   }
   if (topics->depth.getNumSubscribers() > 0) {
     sensor_msgs::ImagePtr msg = toMsg(depth);
     msg->header.frame_id = topics->frame_id;
-    topics->depth.publish(msg);
+    queue_.publish(topics->depth, std::move(msg));
   }
 }
 

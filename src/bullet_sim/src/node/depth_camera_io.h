@@ -5,6 +5,8 @@
 #include <bullet_sim/depth_camera.h>
 
 #include <ros/node_handle.h>
+#include "publish_queue.h"
+
 #include <ros/publisher.h>
 
 #include <map>
@@ -20,6 +22,9 @@ namespace bullet_sim_node {
 /// camera_info stay CameraIo's.
 class DepthCameraIo {
  public:
+  /// Messages leave through `queue`, which must outlive this object.
+  explicit DepthCameraIo(PublishQueue& queue) : queue_(queue) {}
+
   /// Advertises the depth topics of camera `index` of `robot` (camera.depth must be set)
   /// in `robot_nh`, stamped with `frame_id` (tf_prefix already applied).
   void addCamera(const std::string& robot, size_t index, const bullet_sim::CameraSpec& camera,
@@ -47,6 +52,7 @@ class DepthCameraIo {
   };
   const Topics* find(const std::string& robot, size_t index) const;
 
+  PublishQueue& queue_;
   std::map<std::pair<std::string, size_t>, Topics> cameras_;
 };
 

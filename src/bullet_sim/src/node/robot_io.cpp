@@ -7,6 +7,7 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include <cmath>
 #include <optional>
@@ -17,6 +18,8 @@ namespace {
 // Outgoing messages kept per subscriber: at 100x real time a 200 Hz IMU sends 20000
 // messages per wall second, and a short stall of a subscriber must not lose any.
 constexpr uint32_t kQueueSize = 200;
+// What tf2_ros's TransformBroadcaster queues on /tf.
+constexpr uint32_t kTfQueueSize = 100;
 
 struct Field {
   const char* name;
@@ -35,9 +38,9 @@ std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
 
 }  // namespace
 
-RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
+RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
                  const ros::NodeHandle& robot_nh, const std::string& tf_prefix)
-    : sim_(sim), robot_(robot), tf_prefix_(tf_prefix) {
+    : sim_(sim), queue_(queue), robot_(robot), tf_prefix_(tf_prefix) {
   ros::NodeHandle nh(robot_nh);
   const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
   for (const bullet_sim::RaySpec& ray : spec.rays)
@@ -48,6 +51,7 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, const std::string& robot,
   if (spec.diff_drive) {
     odom_pub_ = nh.advertise<nav_msgs::Odometry>(spec.diff_drive->odometry_topic, kQueueSize);
     publish_odom_tf_ = spec.diff_drive->publish_odom_tf;
+    if (publish_odom_tf_) tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", kTfQueueSize);
     cmd_vel_sub_ = nh.subscribe(spec.diff_drive->command_topic, 1, &RobotIo::onCmdVel, this,
                                 ros::TransportHints().tcpNoDelay());
   }
@@ -59,14 +63,14 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       if (due.index < scan_pubs_.size() && scan_pubs_[due.index].getNumSubscribers() > 0) {
         sensor_msgs::LaserScan scan = toMsg(sim_.readRay(robot_, due.index));
         scan.header.frame_id = resolveFrame(tf_prefix_, scan.header.frame_id);
-        scan_pubs_[due.index].publish(scan);
+        queue_.publish(scan_pubs_[due.index], std::move(scan));
       }
       break;
     case bullet_sim::SensorKind::Imu:
       if (due.index < imu_pubs_.size() && imu_pubs_[due.index].getNumSubscribers() > 0) {
         sensor_msgs::Imu imu = toMsg(sim_.readImu(robot_, due.index));
         imu.header.frame_id = resolveFrame(tf_prefix_, imu.header.frame_id);
-        imu_pubs_[due.index].publish(imu);
+        queue_.publish(imu_pubs_[due.index], std::move(imu));
       }
       break;
     case bullet_sim::SensorKind::Odometry:
@@ -74,7 +78,7 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       break;
     case bullet_sim::SensorKind::JointStates:
       if (joint_state_pub_.getNumSubscribers() > 0)
-        joint_state_pub_.publish(toMsg(sim_.readJointStates(robot_)));
+        queue_.publish(joint_state_pub_, toMsg(sim_.readJointStates(robot_)));
       break;
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
@@ -87,8 +91,12 @@ void RobotIo::publishOdometry() {
   bullet_sim::OdometryData odom = sim_.readOdometry(robot_);
   odom.frame_id = resolveFrame(tf_prefix_, odom.frame_id);
   odom.child_frame_id = resolveFrame(tf_prefix_, odom.child_frame_id);
-  if (publish_odom_tf_) tf_broadcaster_.sendTransform(toTransformMsg(odom));
-  if (odom_wanted) odom_pub_.publish(toMsg(odom));
+  if (publish_odom_tf_) {
+    tf2_msgs::TFMessage tf;
+    tf.transforms.push_back(toTransformMsg(odom));
+    queue_.publish(tf_pub_, std::move(tf));
+  }
+  if (odom_wanted) queue_.publish(odom_pub_, toMsg(odom));
 }
 
 void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {

@@ -3,9 +3,10 @@
 
 #include <bullet_sim/simulation.h>
 
+#include "publish_queue.h"
+
 #include <geometry_msgs/Twist.h>
 #include <ros/node_handle.h>
-#include <tf2_ros/transform_broadcaster.h>
 
 #include <string>
 #include <vector>
@@ -16,11 +17,13 @@ namespace bullet_sim_node {
 /// feeds its diff-drive commands to the simulation. Topic names come from the robot's
 /// Gazebo tags, resolved in `robot_nh` (the robot's namespace); frame ids (odom, base,
 /// scan, imu) are put under `tf_prefix` as Gazebo's plugins do. A sensor topic nobody
-/// subscribes to is not read from the simulation at all; the odom tf is always sent.
+/// subscribes to is not read from the simulation at all; the odom tf is always sent. Messages
+/// leave through `queue`, in the order they are made.
 class RobotIo {
  public:
-  RobotIo(bullet_sim::Simulation& sim, const std::string& robot, const ros::NodeHandle& robot_nh,
-          const std::string& tf_prefix);
+  /// `sim` and `queue` must outlive this object.
+  RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
+          const ros::NodeHandle& robot_nh, const std::string& tf_prefix);
   RobotIo(const RobotIo&) = delete;
   RobotIo& operator=(const RobotIo&) = delete;
 
@@ -32,6 +35,7 @@ class RobotIo {
   void publishOdometry();
 
   bullet_sim::Simulation& sim_;
+  PublishQueue& queue_;
   const std::string robot_;
   const std::string tf_prefix_;
   std::vector<ros::Publisher> scan_pubs_;  ///< one per RaySpec, same index
@@ -39,7 +43,7 @@ class RobotIo {
   ros::Publisher odom_pub_;
   ros::Publisher joint_state_pub_;
   ros::Subscriber cmd_vel_sub_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  ros::Publisher tf_pub_;  ///< /tf, for the odom transform
   bool publish_odom_tf_ = false;
 };
 

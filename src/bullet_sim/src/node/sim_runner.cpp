@@ -20,8 +20,8 @@ SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
                      const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz)
     : sim_(sim),
       nh_(nh),
-      cameras_(sim),
-      state_topics_(sim, gazebo_nh, model_states_rate_hz),
+      cameras_(sim, queue_),
+      state_topics_(sim, queue_, gazebo_nh, model_states_rate_hz),
       paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
 }
@@ -34,7 +34,7 @@ void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec
   logSimulationWarnings();
   try {
     const std::string tf_prefix = findTfPrefix(robot_nh);
-    robots_[name] = std::make_unique<RobotIo>(sim_, name, robot_nh, tf_prefix);
+    robots_[name] = std::make_unique<RobotIo>(sim_, queue_, name, robot_nh, tf_prefix);
     cameras_.addRobot(name, robot_nh, tf_prefix);
     if (!tf_prefix.empty()) {
       ROS_INFO("model %s: topics in %s, frames under tf_prefix '%s'", name.c_str(),
@@ -93,7 +93,7 @@ void SimRunner::logSimulationWarnings() {
 void SimRunner::publishClock() {
   rosgraph_msgs::Clock clock;
   clock.clock.fromSec(sim_.timeS());
-  clock_pub_.publish(clock);
+  queue_.publish(clock_pub_, clock);
   last_clock_wall_ = std::chrono::steady_clock::now();
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "camera_io.h"
+#include "publish_queue.h"
 #include "robot_io.h"
 #include "state_topics.h"
 
@@ -17,8 +18,9 @@
 namespace bullet_sim_node {
 
 /// Owns the robots' ROS adapters, the /clock publisher and the model and link state
-/// topics (in `gazebo_nh`) around one Simulation. Everything runs on the node's single
-/// thread (services and subscribers are called between steps), so nothing here is locked.
+/// topics (in `gazebo_nh`) around one Simulation. Everything runs on the node's stepping
+/// thread (services and subscribers are called between steps), so nothing here is locked;
+/// the messages it makes leave from the publishing thread of a PublishQueue, in order.
 class SimRunner {
  public:
   SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
@@ -47,6 +49,9 @@ class SimRunner {
 
  private:
   bullet_sim::Simulation& sim_;
+  /// First: the adapters below queue publish calls on it (it sends what is queued when
+  /// it goes; the calls hold their publishers).
+  PublishQueue queue_;
   ros::NodeHandle nh_;
   ros::Publisher clock_pub_;
   std::map<std::string, std::unique_ptr<RobotIo>> robots_;

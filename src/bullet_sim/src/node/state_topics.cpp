@@ -17,9 +17,9 @@ constexpr double kTimeEpsS = 1e-9;
 
 }  // namespace
 
-StateTopics::StateTopics(const bullet_sim::Simulation& sim, const ros::NodeHandle& gazebo_nh,
-                         double rate_hz)
-    : sim_(sim), period_s_(1.0 / rate_hz) {
+StateTopics::StateTopics(const bullet_sim::Simulation& sim, PublishQueue& queue,
+                         const ros::NodeHandle& gazebo_nh, double rate_hz)
+    : sim_(sim), queue_(queue), period_s_(1.0 / rate_hz) {
   ros::NodeHandle nh(gazebo_nh);
   model_states_pub_ = nh.advertise<gazebo_msgs::ModelStates>("model_states", kQueueSize);
   link_states_pub_ = nh.advertise<gazebo_msgs::LinkStates>("link_states", kQueueSize);
@@ -49,7 +49,7 @@ void StateTopics::publishModelStates() const {
     msg.pose.push_back(toMsg(model.pose));
     msg.twist.push_back(toMsg(bullet_sim::Twist3{}));
   }
-  model_states_pub_.publish(msg);
+  queue_.publish(model_states_pub_, std::move(msg));
 }
 
 void StateTopics::publishLinkStates() const {
@@ -62,7 +62,7 @@ void StateTopics::publishLinkStates() const {
       msg.twist.push_back(toMsg(state.twist));
     }
   }
-  link_states_pub_.publish(msg);
+  queue_.publish(link_states_pub_, std::move(msg));
 }
 
 }  // namespace bullet_sim_node

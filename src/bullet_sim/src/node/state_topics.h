@@ -3,6 +3,8 @@
 
 #include <bullet_sim/simulation.h>
 
+#include "publish_queue.h"
+
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
 
@@ -13,8 +15,9 @@ namespace bullet_sim_node {
 /// in sim time. A topic nobody subscribes to is not filled at all.
 class StateTopics {
  public:
-  StateTopics(const bullet_sim::Simulation& sim, const ros::NodeHandle& gazebo_nh,
-              double rate_hz);
+  /// Messages leave through `queue`; `sim` and `queue` must outlive this object.
+  StateTopics(const bullet_sim::Simulation& sim, PublishQueue& queue,
+              const ros::NodeHandle& gazebo_nh, double rate_hz);
 
   /// Publishes at every multiple of the period in sim time (0.01, 0.02, ... s at 100 Hz)
   /// that the last step reached. Call after every step.
@@ -25,6 +28,7 @@ class StateTopics {
   void publishLinkStates() const;
 
   const bullet_sim::Simulation& sim_;
+  PublishQueue& queue_;
   ros::Publisher model_states_pub_, link_states_pub_;
   const double period_s_;
   long last_tick_ = 0;  ///< periods elapsed at the last message

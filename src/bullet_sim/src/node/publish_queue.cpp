@@ -1,0 +1,66 @@
+#include "publish_queue.h"
+
+#include <ros/console.h>
+
+#include <exception>
+#include <utility>
+
+namespace bullet_sim_node {
+
+PublishQueue::PublishQueue(size_t capacity)
+    : capacity_(capacity), thread_(&PublishQueue::run, this) {}
+
+PublishQueue::~PublishQueue() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_ = true;
+  }
+  work_.notify_one();
+  thread_.join();
+}
+
+void PublishQueue::push(std::function<void()> publish) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  space_.wait(lock, [this] { return calls_.size() < capacity_; });
+  calls_.push_back(std::move(publish));
+  // Waking the thread is a system call: only when it sleeps.
+  if (consumer_waiting_) {
+    consumer_waiting_ = false;
+    lock.unlock();
+    work_.notify_one();
+  }
+}
+
+void PublishQueue::flush() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  space_.wait(lock, [this] { return calls_.empty() && !running_call_; });
+}
+
+void PublishQueue::run() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  for (;;) {
+    if (calls_.empty()) {
+      if (stop_) return;
+      consumer_waiting_ = true;
+      space_.notify_all();  // flush() waits for an empty queue
+      work_.wait(lock, [this] { return !calls_.empty() || stop_; });
+      consumer_waiting_ = false;
+      continue;
+    }
+    std::function<void()> call = std::move(calls_.front());
+    calls_.pop_front();
+    const bool was_full = calls_.size() + 1 == capacity_;
+    running_call_ = true;
+    lock.unlock();
+    if (was_full) space_.notify_all();
+    try {
+      call();
+    } catch (const std::exception& error) {
+      ROS_ERROR("publishing failed: %s", error.what());
+    }
+    lock.lock();
+    running_call_ = false;
+  }
+}
+
+}  // namespace bullet_sim_node

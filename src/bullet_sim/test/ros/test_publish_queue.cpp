@@ -1,0 +1,81 @@
+// PublishQueue: calls run on its own thread, in order, all of them, with bounded waiting.
+#include "../../src/node/publish_queue.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <future>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace bullet_sim_node {
+namespace {
+
+TEST(PublishQueue, RunsEveryCallInOrderOnItsOwnThread) {
+  std::vector<int> order;
+  std::vector<std::thread::id> threads;
+  {
+    PublishQueue queue(8);
+    for (int i = 0; i < 1000; ++i) {
+      queue.push([&order, &threads, i] {
+        order.push_back(i);
+        threads.push_back(std::this_thread::get_id());
+      });
+    }
+    queue.flush();
+    ASSERT_EQ(order.size(), 1000u);  // flush returned after the last call ran
+  }
+  for (int i = 0; i < 1000; ++i) EXPECT_EQ(order[i], i);
+  for (const std::thread::id& id : threads) {
+    EXPECT_NE(id, std::this_thread::get_id());
+    EXPECT_EQ(id, threads.front());
+  }
+}
+
+TEST(PublishQueue, DestructionSendsWhatIsQueued) {
+  std::atomic<int> ran{0};
+  std::promise<void> release;
+  std::shared_future<void> released = release.get_future().share();
+  {
+    PublishQueue queue(100);
+    queue.push([released] { released.wait(); });  // holds the thread until all are queued
+    for (int i = 0; i < 50; ++i) queue.push([&ran] { ++ran; });
+    release.set_value();
+  }
+  EXPECT_EQ(ran.load(), 50);
+}
+
+TEST(PublishQueue, APushBeyondCapacityWaitsForTheThread) {
+  std::promise<void> release;
+  std::shared_future<void> released = release.get_future().share();
+  PublishQueue queue(2);
+  queue.push([released] { released.wait(); });  // taken off the queue, running
+  queue.push([] {});
+  queue.push([] {});  // the queue holds its capacity now
+  std::atomic<bool> pushed{false};
+  std::thread pusher([&] {
+    queue.push([] {});
+    pushed = true;
+  });
+  // The pusher cannot finish while the first call blocks the thread; once released, it must.
+  for (int i = 0; i < 20 && !pushed; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_FALSE(pushed.load());
+  release.set_value();
+  pusher.join();
+  EXPECT_TRUE(pushed.load());
+  queue.flush();
+}
+
+TEST(PublishQueue, AThrowingCallDoesNotStopTheOthers) {
+  std::atomic<int> ran{0};
+  PublishQueue queue(4);
+  queue.push([] { throw std::runtime_error("topic gone"); });
+  queue.push([&ran] { ++ran; });
+  queue.flush();
+  EXPECT_EQ(ran.load(), 1);
+}
+
+}  // namespace
+}  // namespace bullet_sim_node
