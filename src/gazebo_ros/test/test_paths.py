@@ -19,6 +19,7 @@ class TestPaths(unittest.TestCase):
                          '  --attrib=gazebo_model_path) echo "pkg_a /a/models:/a/more";'
                          ' echo "pkg_b /b/models";;\n'
                          '  --attrib=gazebo_media_path) echo "pkg_a /a/media";;\n'
+                         '  gazebo_ros) echo "/share/found";;\n'
                          'esac\n')
         os.chmod(self.rospack, stat.S_IRWXU)
 
@@ -31,6 +32,30 @@ class TestPaths(unittest.TestCase):
         self.assertEqual(env['GAZEBO_MODEL_PATH'], '/mine:/a/more:/a/models:/b/models')
         self.assertEqual(env['GAZEBO_RESOURCE_PATH'], '/a/media:/share/gz')
         self.assertEqual(env['GAZEBO_PLUGIN_PATH'], '')
+
+    def test_the_package_folder_comes_from_rospack_find_when_not_given(self):
+        env = paths.gazebo_environment({}, rospack=(self.rospack,))
+        self.assertEqual(env['GAZEBO_RESOURCE_PATH'], '/a/media:/share/found')
+
+    def test_the_node_is_found_in_the_first_catkin_workspace_that_has_it(self):
+        def workspace(name, with_node):
+            prefix = os.path.join(self.tmp, name)
+            os.makedirs(os.path.join(prefix, 'lib', 'bullet_sim'))
+            open(os.path.join(prefix, '.catkin'), 'w').close()
+            if with_node:
+                node = os.path.join(prefix, 'lib', 'bullet_sim', 'bullet_sim_node')
+                open(node, 'w').close()
+                os.chmod(node, stat.S_IRWXU)
+            return prefix
+        plain = os.path.join(self.tmp, 'plain')  # no .catkin: not a workspace
+        os.makedirs(os.path.join(plain, 'lib', 'bullet_sim'))
+        open(os.path.join(plain, 'lib', 'bullet_sim', 'bullet_sim_node'), 'w').close()
+        env = {'CMAKE_PREFIX_PATH': ':'.join([plain, workspace('empty', False),
+                                              workspace('devel', True), workspace('opt', True)])}
+        self.assertEqual(paths.workspace_executable('bullet_sim', 'bullet_sim_node', env),
+                         os.path.join(self.tmp, 'devel', 'lib', 'bullet_sim', 'bullet_sim_node'))
+        self.assertIsNone(paths.workspace_executable('bullet_sim', 'nothing', env))
+        self.assertIsNone(paths.workspace_executable('bullet_sim', 'bullet_sim_node', {}))
 
     def test_real_rospack_lists_exports_of_packages_depending_on_gazebo_ros(self):
         # Every path rospack reports must be a string without the package name in it.

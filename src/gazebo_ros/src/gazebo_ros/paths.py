@@ -17,13 +17,16 @@ EXPORTS = (
 )
 
 
-def _start_rospack(attrib, rospack):
+def _start(command):
     try:
-        return subprocess.Popen(list(rospack) + ['plugins', '--attrib=' + attrib, 'gazebo_ros'],
-                                stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+        return subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
                                 universal_newlines=True)
     except OSError:
         return None
+
+
+def _start_rospack(attrib, rospack):
+    return _start(list(rospack) + ['plugins', '--attrib=' + attrib, 'gazebo_ros'])
 
 
 def _paths_of(process):
@@ -50,22 +53,38 @@ def split(value):
     return [p for p in (value or '').split(':') if p]
 
 
-def gazebo_environment(env, share_dir, rospack=('rospack',)):
+def gazebo_environment(env, share_dir=None, rospack=('rospack',)):
     """A copy of `env` whose Gazebo paths also hold the package exports and this
-    package's own folder (for `worlds/...` names). Entries already set come first, as
-    in Gazebo."""
+    package's own folder (for `worlds/...` names; None: where `rospack find gazebo_ros`
+    says). Entries already set come first, as in Gazebo."""
     env = dict(env)
-    # Each rospack crawls the packages; the three run side by side.
+    # Each rospack crawls the packages; they run side by side.
     running = [_start_rospack(attrib, rospack) for attrib, _ in EXPORTS]
+    if share_dir is None:
+        found = _start(list(rospack) + ['find', 'gazebo_ros'])
+        share_dir = found.communicate()[0].strip() if found else ''
     for (_, variable), process in zip(EXPORTS, running):
         paths = split(env.get(variable))
         for path in _paths_of(process):
             if path not in paths:
                 paths.append(path)
-        if variable == 'GAZEBO_RESOURCE_PATH' and share_dir not in paths:
+        if variable == 'GAZEBO_RESOURCE_PATH' and share_dir and share_dir not in paths:
             paths.append(share_dir)
         env[variable] = ':'.join(paths)
     return env
+
+
+def workspace_executable(project, name, env):
+    """`lib/PROJECT/NAME` in the first catkin workspace of CMAKE_PREFIX_PATH that has it,
+    or None: what catkin's find_in_workspaces(['libexec'], ...) finds, without importing
+    catkin_pkg (40 ms at every start of the simulator)."""
+    for prefix in split(env.get('CMAKE_PREFIX_PATH')):
+        if not os.path.isfile(os.path.join(prefix, '.catkin')):
+            continue
+        path = os.path.join(prefix, 'lib', project, name)
+        if os.path.isfile(path) and os.access(path, os.X_OK):
+            return path
+    return None
 
 
 class WorldNotFound(Exception):
