@@ -89,6 +89,7 @@ bool PhysicsServices::step(bullet_sim::StepSimulation::Request& req,
   } else {
     for (uint32_t i = 0; i < req.steps; ++i) runner_.step();
     runner_.publishClock();
+    runner_.flushMessages();  // the caller may count them once the call returns
     res.success = true;
     res.status_message = "stepped " + std::to_string(req.steps) + " steps";
   }

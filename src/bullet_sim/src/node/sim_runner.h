@@ -42,6 +42,8 @@ class SimRunner {
   void logSimulationWarnings();
   /// Publishes the current sim time on /clock.
   void publishClock();
+  /// Returns when every message made so far has been handed to roscpp.
+  void flushMessages() { queue_.flush(); }
 
   bool paused() const { return paused_; }
   void setPaused(bool paused) { paused_ = paused; }
