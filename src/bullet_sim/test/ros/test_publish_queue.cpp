@@ -48,10 +48,14 @@ TEST(PublishQueue, DestructionSendsWhatIsQueued) {
 }
 
 TEST(PublishQueue, APushBeyondCapacityWaitsForTheThread) {
-  std::promise<void> release;
+  std::promise<void> started, release;
   std::shared_future<void> released = release.get_future().share();
   PublishQueue queue(2);
-  queue.push([released] { released.wait(); });  // taken off the queue, running
+  queue.push([&started, released] {
+    started.set_value();
+    released.wait();
+  });
+  started.get_future().wait();  // the thread has taken it and runs it
   queue.push([] {});
   queue.push([] {});  // the queue holds its capacity now
   std::atomic<bool> pushed{false};
