@@ -4,10 +4,18 @@
 // fast as one core allows, while a lidar lane-keeper drives the robot round
 // the track. Prints the real-time factor last.
 //
-// Usage: bullet_sim_bench <robot.urdf> <world.sdf> [sim_seconds]
+// With a file of start poses (one "x y yaw" line per robot, as bench/multi_robot.py places
+// them) it runs one Burger per line instead, each driving the command's circle (0.1 m/s,
+// 0.3 rad/s) with every sensor read, and checks that each stayed on its circle.
+//
+// Usage: bullet_sim_bench <robot.urdf> <world.sdf> [sim_seconds [poses_file]]
 #include <algorithm>
 #include <chrono>
 #include <ctime>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+#include <string>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +51,71 @@ void steer(bullet_sim::Simulation* sim, const bullet_sim::LaserScanData& scan) {
   }
 }
 
+/// The circle command of bench/scenario.py and the radius it drives.
+constexpr double kCircleLinearMps = 0.1, kCircleAngularRadps = 0.3;
+constexpr double kCircleRadiusM = kCircleLinearMps / kCircleAngularRadps;
+/// How far from its circle a robot may end, and how far its path and turn may stray from
+/// v t and w t (bench/scenario.py's peers check 15 %; the circle's own creep is a few %).
+constexpr double kCircleToleranceM = 0.05;
+constexpr double kDriveTolerance = 0.15;
+
+/// Path length and heading change of a robot, from its pose at each odometry reading.
+struct Track {
+  Eigen::Vector2d last_xy;
+  double last_yaw, path_m = 0, turn_rad = 0;
+  void add(const bullet_sim::Pose3& pose) {
+    const Eigen::Vector2d xy = pose.position.head<2>();
+    const Eigen::Vector3d x_axis = pose.orientation * Eigen::Vector3d::UnitX();
+    const double yaw = std::atan2(x_axis.y(), x_axis.x());
+    path_m += (xy - last_xy).norm();
+    turn_rad += std::remainder(yaw - last_yaw, 2.0 * M_PI);
+    last_xy = xy;
+    last_yaw = yaw;
+  }
+};
+
+struct Start {
+  double x, y, yaw;
+};
+
+std::vector<Start> readStarts(const char* path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(std::string(path) + ": cannot read the start poses");
+  std::vector<Start> starts;
+  Start s;
+  while (in >> s.x >> s.y >> s.yaw) starts.push_back(s);
+  if (starts.empty()) throw std::runtime_error(std::string(path) + ": no \"x y yaw\" line");
+  return starts;
+}
+
+/// Centre of the counter-clockwise circle a robot starting at `s` drives: on its left.
+Eigen::Vector2d circleCentre(const Start& s) {
+  return {s.x - kCircleRadiusM * std::sin(s.yaw), s.y + kCircleRadiusM * std::cos(s.yaw)};
+}
+
+/// Every robot drove its circle: path and turn within kDriveTolerance of v t and w t, and
+/// it ends on the circle. Prints the worst of each, or why not.
+bool onTheirCircles(const bullet_sim::Simulation& sim, const std::vector<Start>& starts,
+                    const std::vector<std::string>& names,
+                    const std::map<std::string, Track>& tracks) {
+  double off_m = 0, path_error = 0, turn_error = 0;
+  for (size_t i = 0; i < starts.size(); ++i) {
+    const Eigen::Vector2d xy = sim.modelPose(names[i]).position.head<2>();
+    off_m = std::max(off_m, std::fabs((xy - circleCentre(starts[i])).norm() - kCircleRadiusM));
+    const Track& t = tracks.at(names[i]);
+    const double v_t = kCircleLinearMps * sim.timeS(), w_t = kCircleAngularRadps * sim.timeS();
+    path_error = std::max(path_error, std::fabs(t.path_m / v_t - 1));
+    turn_error = std::max(turn_error, std::fabs(t.turn_rad / w_t - 1));
+  }
+  std::printf("%zu robots on their circles: largest distance off a circle %.3f m, path %.1f %%, "
+              "turn %.1f %% off v t and w t\n",
+              starts.size(), off_m, 100 * path_error, 100 * turn_error);
+  const bool drove = path_error <= kDriveTolerance && turn_error <= kDriveTolerance;
+  if (drove && off_m <= kCircleToleranceM) return true;
+  std::fprintf(stderr, "sanity check failed: a robot did not drive its circle\n");
+  return false;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,9 +128,20 @@ int main(int argc, char** argv) {
     const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(argv[1]);
     const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[2]);
     bullet_sim::Simulation sim(world, bullet_sim::SimConfig());
-    bullet_sim::Pose3 spawn;
-    spawn.orientation = Eigen::AngleAxisd(1.5675, Eigen::Vector3d::UnitZ());
-    sim.spawnRobot("robot", robot, spawn);
+    const std::vector<Start> starts =
+        argc > 4 ? readStarts(argv[4]) : std::vector<Start>{{0.0, 0.0, 1.5675}};
+    const bool circles = argc > 4;
+    std::vector<std::string> robot_names;
+    std::map<std::string, Track> tracks;
+    for (size_t i = 0; i < starts.size(); ++i) {
+      robot_names.push_back(i == 0 ? "robot" : "robot_" + std::to_string(i + 1));
+      bullet_sim::Pose3 spawn;
+      spawn.position = Eigen::Vector3d(starts[i].x, starts[i].y, 0.0);
+      spawn.orientation = Eigen::AngleAxisd(starts[i].yaw, Eigen::Vector3d::UnitZ());
+      sim.spawnRobot(robot_names.back(), robot, spawn);
+      if (circles) sim.setCmdVel(robot_names.back(), kCircleLinearMps, kCircleAngularRadps);
+      tracks[robot_names.back()] = Track{Eigen::Vector2d(starts[i].x, starts[i].y), starts[i].yaw};
+    }
 
     using Clock = std::chrono::steady_clock;
     size_t reads[5] = {0, 0, 0, 0, 0};
@@ -71,18 +155,26 @@ int main(int argc, char** argv) {
       auto t = Clock::now();
       physics_s += std::chrono::duration<double>(t - before_step).count();
       for (const bullet_sim::DueSensor& due : due_now) {
-        if (due.robot != "robot") continue;  // the world's movable models have no sensors
+        if (due.robot.rfind("robot", 0) != 0) continue;  // the world's movable models
         const int kind = static_cast<int>(due.kind);
         ++reads[kind];
         switch (due.kind) {
           case bullet_sim::SensorKind::Ray:
-            steer(&sim, sim.readRay(due.robot, due.index));
+            if (circles) {
+              const bullet_sim::LaserScanData scan = sim.readRay(due.robot, due.index);
+              checksum += static_cast<double>(
+                  std::count_if(scan.ranges.begin(), scan.ranges.end(),
+                                [](float r) { return std::isfinite(r); }));
+            } else {
+              steer(&sim, sim.readRay(due.robot, due.index));
+            }
             break;
           case bullet_sim::SensorKind::Imu:
             checksum += sim.readImu(due.robot, due.index).linear_acceleration.z();
             break;
           case bullet_sim::SensorKind::Odometry:
             checksum += sim.readOdometry(due.robot).pose.position.x();
+            tracks[due.robot].add(sim.modelPose(due.robot));
             checksum += sim.linkPoses(due.robot).size();
             break;
           case bullet_sim::SensorKind::JointStates:
@@ -109,6 +201,7 @@ int main(int argc, char** argv) {
     const bullet_sim::Pose3 end = sim.modelPose("robot");
     std::printf("robot at x %.2f y %.2f after the run (checksum %g)\n", end.position.x(),
                 end.position.y(), checksum);
+    if (circles && !onTheirCircles(sim, starts, robot_names, tracks)) return 1;
     std::printf("process CPU time %.3f s: real-time factor per CPU second %.1f\n", cpu_s,
                 sim.timeS() / cpu_s);
     std::printf("sim %.1f s in %.3f s wall: real-time factor %.1f\n", sim.timeS(), wall_s,
