@@ -101,7 +101,8 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
   }
   const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
   if (info_wanted) {
-    queue_.publish(topics.info, toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
+    queue_.publish(topics.info,
+                   toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
   }
   depth_.publishInfo(due.robot, due.index, camera, sim_.timeS());
   if (!image_wanted && !depth_wanted) return;
