@@ -7,8 +7,8 @@
 
 namespace bullet_sim_node {
 
-PublishQueue::PublishQueue(size_t capacity)
-    : capacity_(capacity), thread_(&PublishQueue::run, this) {}
+PublishQueue::PublishQueue(size_t capacity, std::chrono::microseconds linger)
+    : capacity_(capacity), linger_(linger), thread_(&PublishQueue::run, this) {}
 
 PublishQueue::~PublishQueue() {
   {
@@ -33,18 +33,35 @@ void PublishQueue::push(std::function<void()> publish) {
 
 void PublishQueue::flush() {
   std::unique_lock<std::mutex> lock(mutex_);
+  if (calls_.empty() && !running_call_) return;
+  if (lingering_) {
+    wake_requested_ = true;
+    work_.notify_one();
+  }
   space_.wait(lock, [this] { return calls_.empty() && !running_call_; });
 }
 
 void PublishQueue::run() {
+  using Clock = std::chrono::steady_clock;
+  bool linger = false;  // the last calls came within a linger of the queue running dry
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     if (calls_.empty()) {
       if (stop_) return;
-      consumer_waiting_ = true;
       space_.notify_all();  // flush() waits for an empty queue
+      if (linger) {
+        // Pushes do not wake a lingering thread; it looks again when the linger ends.
+        lingering_ = true;
+        work_.wait_for(lock, linger_, [this] { return stop_ || wake_requested_; });
+        lingering_ = false;
+        wake_requested_ = false;
+        if (!calls_.empty() || stop_) continue;
+      }
+      const Clock::time_point dry = Clock::now();
+      consumer_waiting_ = true;
       work_.wait(lock, [this] { return !calls_.empty() || stop_; });
       consumer_waiting_ = false;
+      linger = Clock::now() - dry < linger_;
       continue;
     }
     std::function<void()> call = std::move(calls_.front());

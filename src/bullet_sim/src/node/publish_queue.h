@@ -1,6 +1,7 @@
 // Sends the stepping thread's messages from a thread of their own.
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -18,9 +19,18 @@ namespace bullet_sim_node {
 /// messages to a publishing thread (PubMultiQueue). Messages leave in the order they were
 /// queued. When `capacity` calls wait, push() waits too: a simulation running faster than
 /// its messages can leave slows down instead of queueing without bound.
+///
+/// Once the queue runs dry the thread lingers for `linger` before it sleeps until a push
+/// wakes it. Calls pushed while it lingers wait for the end of the linger: while messages
+/// keep coming (a simulation far faster than real time) they leave in batches every
+/// `linger`, and neither the stepping thread nor roscpp pays a wake-up per message. When
+/// they come further apart than `linger` (real time), each push wakes the thread at once.
 class PublishQueue {
  public:
-  explicit PublishQueue(size_t capacity = 1024);
+  static constexpr std::chrono::microseconds kDefaultLinger{100};
+
+  explicit PublishQueue(size_t capacity = 1024,
+                        std::chrono::microseconds linger = kDefaultLinger);
   /// Sends what is queued, then stops the thread.
   ~PublishQueue();
   PublishQueue(const PublishQueue&) = delete;
@@ -32,19 +42,22 @@ class PublishQueue {
   void publish(const ros::Publisher& publisher, Message message) {
     push([publisher, m = std::move(message)] { publisher.publish(m); });
   }
-  /// Returns when every call queued before it has run.
+  /// Returns when every call queued before it has run (without waiting for a linger).
   void flush();
 
  private:
   void run();
 
   const size_t capacity_;
+  const std::chrono::microseconds linger_;
   std::mutex mutex_;
   std::condition_variable work_;   ///< the thread waits for calls
   std::condition_variable space_;  ///< push() and flush() wait for the thread
   std::deque<std::function<void()>> calls_;
   bool running_call_ = false;
-  bool consumer_waiting_ = false;
+  bool consumer_waiting_ = false;  ///< asleep until a push wakes it
+  bool lingering_ = false;         ///< waiting for the end of a linger
+  bool wake_requested_ = false;    ///< flush() cuts the linger short
   bool stop_ = false;
   std::thread thread_;
 };

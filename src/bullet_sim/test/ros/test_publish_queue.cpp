@@ -81,5 +81,69 @@ TEST(PublishQueue, AThrowingCallDoesNotStopTheOthers) {
   EXPECT_EQ(ran.load(), 1);
 }
 
+using std::chrono::steady_clock;
+constexpr auto kLongLinger = std::chrono::seconds(10);
+
+/// Brings `queue` (of linger kLongLinger) into its lingering state: a push that comes
+/// within a linger of the queue running dry leaves the thread lingering after it.
+void startLingering(PublishQueue* queue, std::atomic<int>* ran) {
+  for (int i = 0; i < 2; ++i) {
+    queue->push([ran] { ++*ran; });
+    queue->flush();
+  }
+}
+
+TEST(PublishQueue, CallsPushedWhileTheThreadLingersLeaveTogetherAtItsEnd) {
+  std::atomic<int> ran{0};
+  PublishQueue queue(16, kLongLinger);
+  startLingering(&queue, &ran);
+  ASSERT_EQ(ran.load(), 2);
+  // No wake-up per push: the thread looks again only when its linger ends.
+  queue.push([&ran] { ++ran; });
+  queue.push([&ran] { ++ran; });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  EXPECT_EQ(ran.load(), 2);
+  // flush() does not wait for the linger.
+  const auto start = steady_clock::now();
+  queue.flush();
+  EXPECT_EQ(ran.load(), 4);
+  EXPECT_LT(steady_clock::now() - start, kLongLinger / 2);
+}
+
+TEST(PublishQueue, DestructionDoesNotWaitForTheLinger) {
+  std::atomic<int> ran{0};
+  steady_clock::time_point start;
+  {
+    PublishQueue queue(16, kLongLinger);
+    startLingering(&queue, &ran);
+    queue.push([&ran] { ++ran; });
+    start = steady_clock::now();
+  }
+  EXPECT_LT(steady_clock::now() - start, kLongLinger / 2);
+  EXPECT_EQ(ran.load(), 3);
+}
+
+TEST(PublishQueue, APushAfterTheQueueSatIdleLongerThanTheLingerRunsAtOnce) {
+  PublishQueue queue(16, std::chrono::microseconds(1000));
+  queue.push([] {});
+  queue.flush();
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the thread sleeps now
+  std::promise<void> ran;
+  queue.push([&ran] { ran.set_value(); });
+  // Without flush: the push itself wakes the sleeping thread.
+  EXPECT_EQ(ran.get_future().wait_for(std::chrono::seconds(5)), std::future_status::ready);
+  queue.flush();
+}
+
+TEST(PublishQueue, WithoutALingerEveryPushWakesTheThread) {
+  PublishQueue queue(16, std::chrono::microseconds(0));
+  for (int i = 0; i < 3; ++i) {
+    std::promise<void> ran;
+    queue.push([&ran] { ran.set_value(); });
+    EXPECT_EQ(ran.get_future().wait_for(std::chrono::seconds(5)), std::future_status::ready);
+    queue.flush();
+  }
+}
+
 }  // namespace
 }  // namespace bullet_sim_node
