@@ -20,11 +20,12 @@ namespace bullet_sim_node {
 /// queued. When `capacity` calls wait, push() waits too: a simulation running faster than
 /// its messages can leave slows down instead of queueing without bound.
 ///
-/// Once the queue runs dry the thread lingers for `linger` before it sleeps until a push
-/// wakes it. Calls pushed while it lingers wait for the end of the linger: while messages
-/// keep coming (a simulation far faster than real time) they leave in batches every
-/// `linger`, and neither the stepping thread nor roscpp pays a wake-up per message. When
-/// they come further apart than `linger` (real time), each push wakes the thread at once.
+/// When calls come within `linger` of the queue running dry, the thread lingers that long
+/// the next time it runs dry before it sleeps until a push wakes it, and pushes do not wake
+/// a lingering thread: while calls keep coming that fast (a simulation far faster than
+/// real time) they leave in batches every `linger`, and the stepping thread makes no
+/// system call to wake the thread for each burst. When they come further apart (real
+/// time), the thread sleeps as soon as the queue runs dry and each push wakes it at once.
 class PublishQueue {
  public:
   static constexpr std::chrono::microseconds kDefaultLinger{100};
