@@ -19,23 +19,43 @@ PublishQueue::~PublishQueue() {
   thread_.join();
 }
 
+PublishQueue::Batch::Batch(PublishQueue& queue) : queue_(queue) {
+  std::lock_guard<std::mutex> lock(queue_.mutex_);
+  ++queue_.batches_;
+}
+
+PublishQueue::Batch::~Batch() {
+  std::unique_lock<std::mutex> lock(queue_.mutex_);
+  if (--queue_.batches_ == 0 && !queue_.calls_.empty()) queue_.wakeIfSleeping(lock);
+}
+
+void PublishQueue::wakeIfSleeping(std::unique_lock<std::mutex>& lock) {
+  // Waking the thread is a system call: only when it sleeps.
+  if (!consumer_waiting_) return;
+  consumer_waiting_ = false;
+  lock.unlock();
+  work_.notify_one();
+}
+
 void PublishQueue::push(std::function<void()> publish) {
   std::unique_lock<std::mutex> lock(mutex_);
-  space_.wait(lock, [this] { return calls_.size() < capacity_; });
-  calls_.push_back(std::move(publish));
-  // Waking the thread is a system call: only when it sleeps.
-  if (consumer_waiting_) {
-    consumer_waiting_ = false;
-    lock.unlock();
-    work_.notify_one();
+  if (calls_.size() >= capacity_) {
+    if (consumer_waiting_) {  // held back by a Batch: the thread must make room
+      consumer_waiting_ = false;
+      work_.notify_one();
+    }
+    space_.wait(lock, [this] { return calls_.size() < capacity_; });
   }
+  calls_.push_back(std::move(publish));
+  if (batches_ == 0) wakeIfSleeping(lock);
 }
 
 void PublishQueue::flush() {
   std::unique_lock<std::mutex> lock(mutex_);
   if (calls_.empty() && !running_call_) return;
-  if (lingering_) {
-    wake_requested_ = true;
+  if (lingering_) wake_requested_ = true;
+  if (lingering_ || consumer_waiting_) {
+    consumer_waiting_ = false;
     work_.notify_one();
   }
   space_.wait(lock, [this] { return calls_.empty() && !running_call_; });

@@ -37,6 +37,20 @@ class PublishQueue {
   PublishQueue(const PublishQueue&) = delete;
   PublishQueue& operator=(const PublishQueue&) = delete;
 
+  /// While a Batch lives, pushes do not wake a sleeping thread (unless the queue is full);
+  /// its end does, once, if calls wait. A step's messages, all stamped with the step's
+  /// time, cost one wake-up however many robots made them.
+  class Batch {
+   public:
+    explicit Batch(PublishQueue& queue);
+    ~Batch();
+    Batch(const Batch&) = delete;
+    Batch& operator=(const Batch&) = delete;
+
+   private:
+    PublishQueue& queue_;
+  };
+
   void push(std::function<void()> publish);
   /// Queues `publisher.publish(message)`; `message` is a message or a shared pointer to one.
   template <class Message>
@@ -48,6 +62,8 @@ class PublishQueue {
 
  private:
   void run();
+  /// Wakes the thread when it sleeps (with `mutex_` held by `lock`, which it releases).
+  void wakeIfSleeping(std::unique_lock<std::mutex>& lock);
 
   const size_t capacity_;
   const std::chrono::microseconds linger_;
@@ -59,6 +75,7 @@ class PublishQueue {
   bool consumer_waiting_ = false;  ///< asleep until a push wakes it
   bool lingering_ = false;         ///< waiting for the end of a linger
   bool wake_requested_ = false;    ///< flush() cuts the linger short
+  int batches_ = 0;                ///< open Batches: pushes do not wake the thread
   bool stop_ = false;
   std::thread thread_;
 };

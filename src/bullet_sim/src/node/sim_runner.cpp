@@ -70,6 +70,8 @@ const bullet_sim::Pose3& SimRunner::spawnPose(const std::string& name) const {
 }
 
 void SimRunner::step() {
+  // The step's messages wake the publishing thread once, when they are all queued.
+  const PublishQueue::Batch batch(queue_);
   const std::vector<bullet_sim::DueSensor> due = sim_.step();
   const auto now = std::chrono::steady_clock::now();
   // A reading stamped t goes out after the clock says t, so no listener sees the future.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <chrono>
 #include <future>
 #include <stdexcept>
@@ -143,6 +144,75 @@ TEST(PublishQueue, WithoutALingerEveryPushWakesTheThread) {
     EXPECT_EQ(ran.get_future().wait_for(std::chrono::seconds(5)), std::future_status::ready);
     queue.flush();
   }
+}
+
+/// Waits up to 5 s for `done`; a queue that never runs the call would hang the test
+/// binary in the queue's destructor, so that ends it with a failure instead.
+void expectSoon(std::future<void> done, const char* what) {
+  if (done.wait_for(std::chrono::seconds(5)) == std::future_status::ready) return;
+  ADD_FAILURE() << what << " did not happen within 5 s";
+  std::abort();
+}
+
+/// A queue without a linger whose thread has gone to sleep on an empty queue.
+void startSleeping(PublishQueue* queue) {
+  queue->push([] {});
+  queue->flush();
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+}
+
+TEST(PublishQueue, CallsPushedDuringABatchLeaveWhenItEnds) {
+  PublishQueue queue(16, std::chrono::microseconds(0));
+  startSleeping(&queue);
+  std::atomic<int> ran{0};
+  std::promise<void> last;
+  {
+    const PublishQueue::Batch batch(queue);
+    queue.push([&ran] { ++ran; });
+    queue.push([&ran] { ++ran; });
+    queue.push([&ran, &last] {
+      ++ran;
+      last.set_value();
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    EXPECT_EQ(ran.load(), 0);  // the pushes did not wake the thread
+  }
+  // The batch's end did, without a flush.
+  expectSoon(last.get_future(), "the batch's calls");
+  EXPECT_EQ(ran.load(), 3);
+  queue.flush();
+}
+
+TEST(PublishQueue, ABatchBeyondCapacityWakesTheThreadToMakeRoom) {
+  PublishQueue queue(2, std::chrono::microseconds(0));
+  startSleeping(&queue);
+  std::atomic<int> ran{0};
+  std::promise<void> pushed;
+  std::thread pusher([&] {
+    const PublishQueue::Batch batch(queue);
+    for (int i = 0; i < 5; ++i) queue.push([&ran] { ++ran; });
+    pushed.set_value();
+  });
+  expectSoon(pushed.get_future(), "five pushes into a queue of two within one batch");
+  pusher.join();
+  queue.flush();
+  EXPECT_EQ(ran.load(), 5);
+}
+
+TEST(PublishQueue, FlushDuringABatchRunsWhatIsQueued) {
+  PublishQueue queue(16, std::chrono::microseconds(0));
+  startSleeping(&queue);
+  std::atomic<int> ran{0};
+  const PublishQueue::Batch batch(queue);
+  queue.push([&ran] { ++ran; });
+  std::promise<void> flushed;
+  std::thread flusher([&] {
+    queue.flush();
+    flushed.set_value();
+  });
+  expectSoon(flushed.get_future(), "flush inside a batch");
+  flusher.join();
+  EXPECT_EQ(ran.load(), 1);
 }
 
 }  // namespace
