@@ -37,13 +37,17 @@ void PublishQueue::wakeIfSleeping(std::unique_lock<std::mutex>& lock) {
   work_.notify_one();
 }
 
+void PublishQueue::wakeNow() {
+  if (lingering_) wake_requested_ = true;
+  if (!lingering_ && !consumer_waiting_) return;  // it is running calls
+  consumer_waiting_ = false;
+  work_.notify_one();
+}
+
 void PublishQueue::push(std::function<void()> publish) {
   std::unique_lock<std::mutex> lock(mutex_);
   if (calls_.size() >= capacity_) {
-    if (consumer_waiting_) {  // held back by a Batch: the thread must make room
-      consumer_waiting_ = false;
-      work_.notify_one();
-    }
+    wakeNow();  // it may be held back by a Batch or a linger: it must make room
     space_.wait(lock, [this] { return calls_.size() < capacity_; });
   }
   calls_.push_back(std::move(publish));
@@ -53,11 +57,7 @@ void PublishQueue::push(std::function<void()> publish) {
 void PublishQueue::flush() {
   std::unique_lock<std::mutex> lock(mutex_);
   if (calls_.empty() && !running_call_) return;
-  if (lingering_) wake_requested_ = true;
-  if (lingering_ || consumer_waiting_) {
-    consumer_waiting_ = false;
-    work_.notify_one();
-  }
+  wakeNow();
   space_.wait(lock, [this] { return calls_.empty() && !running_call_; });
 }
 

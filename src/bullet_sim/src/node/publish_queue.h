@@ -64,6 +64,8 @@ class PublishQueue {
   void run();
   /// Wakes the thread when it sleeps (with `mutex_` held by `lock`, which it releases).
   void wakeIfSleeping(std::unique_lock<std::mutex>& lock);
+  /// Wakes the thread when it sleeps or lingers (with `mutex_` held).
+  void wakeNow();
 
   const size_t capacity_;
   const std::chrono::microseconds linger_;
