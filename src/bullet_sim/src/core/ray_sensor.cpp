@@ -1,13 +1,34 @@
 #include "ray_sensor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "bullet_convert.h"
 
 namespace bullet_sim {
 namespace {
+
+/// Fraction of the ray o + t d (t in [0, 1], box frame) where it enters the box of half
+/// extents `half` centred on the origin: 0 if it starts inside, 1 if it misses.
+double slabFraction(const btVector3& o, const btVector3& d, const btVector3& half) {
+  double t_near = 0.0, t_far = 1.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::fabs(d[axis]) < 1e-15) {
+      if (std::fabs(o[axis]) > half[axis]) return 1.0;
+      continue;
+    }
+    double t0 = (-half[axis] - o[axis]) / d[axis];
+    double t1 = (half[axis] - o[axis]) / d[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    t_near = std::max(t_near, t0);
+    t_far = std::min(t_far, t1);
+    if (t_near > t_far) return 1.0;
+  }
+  return t_near;
+}
 
 /// Bullet's broadphase and filtering, with boxes intersected exactly by slabs:
 /// Bullet's general convex ray cast iterates (about 13k instructions per
@@ -34,7 +55,10 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
                  const btTransform& T_world_shape) {
     if (shape->getShapeType() == BOX_SHAPE_PROXYTYPE) {
       const auto* box = static_cast<const btBoxShape*>(shape);
-      const double t = slabFraction(T_world_shape, box->getHalfExtentsWithMargin());
+      const btMatrix3x3 R_shape_world = T_world_shape.getBasis().transpose();
+      const double t = slabFraction(T_world_shape.invXform(m_rayFromWorld),
+                                    R_shape_world * (m_rayToWorld - m_rayFromWorld),
+                                    box->getHalfExtentsWithMargin());
       if (t < m_closestHitFraction) {
         m_closestHitFraction = t;
         m_collisionObject = obj;
@@ -57,33 +81,193 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
                                       T_world_shape, *this);
     }
   }
+};
 
- private:
-  /// Fraction of the ray where it enters the box, or 1 if it misses.
-  double slabFraction(const btTransform& box_in_world, const btVector3& half) const {
-    const btVector3 o = box_in_world.invXform(m_rayFromWorld);
-    const btVector3 d = box_in_world.getBasis().transpose() * (m_rayToWorld - m_rayFromWorld);
-    double t_near = 0.0, t_far = 1.0;
+/// The parts a planar scan can hit, gathered once per scan from Bullet's broadphase (the
+/// objects whose bounding boxes lie within range), compounds opened, and each listed for
+/// the rays of the directions it covers as seen from the sensor: a ray then tests the two or
+/// three parts in its direction instead of walking the broadphase tree and slab-testing
+/// every box whose bounding box it crosses. Boxes are intersected by slabs, as above;
+/// every other shape goes to Bullet's narrowphase.
+class ScanParts : public btBroadphaseAabbCallback {
+ public:
+  /// Sample k of the scan looks along azimuth angle_min + k * increment in the sensor frame.
+  ScanParts(const btTransform& T_world_sensor, double angle_min, double increment, int samples)
+      : T_world_sensor_(T_world_sensor),
+        angle_min_(angle_min),
+        increment_(increment),
+        samples_(samples),
+        first_(samples + 1, 0) {}
+
+  /// Lists the objects within `range` of the sensor; false if they make more than
+  /// `max_parts` parts.
+  bool gather(btCollisionWorld& world, double range, size_t max_parts) {
+    const btVector3 reach(range, range, range);
+    const btVector3& origin = T_world_sensor_.getOrigin();
+    reach_min_ = origin - reach;
+    reach_max_ = origin + reach;
+    world.getBroadphase()->aabbTest(reach_min_, reach_max_, *this);
+    for (const btCollisionObject* obj : objects_) {
+      addShape(obj, obj->getCollisionShape(), obj->getWorldTransform());
+      if (parts_.size() > max_parts) return false;
+    }
+    // Each part's runs of rays, then the parts of each ray in one array.
+    std::vector<std::array<int, 3>> runs;  // part, first ray, last ray
+    for (size_t p = 0; p < parts_.size(); ++p) addRuns(static_cast<int>(p), &runs);
+    for (const auto& run : runs) {
+      for (int k = run[1]; k <= run[2]; ++k) ++first_[k + 1];
+    }
+    for (int k = 0; k < samples_; ++k) first_[k + 1] += first_[k];
+    ray_parts_.resize(first_[samples_]);
+    std::vector<int> next(first_.begin(), first_.end() - 1);
+    for (const auto& run : runs) {
+      for (int k = run[1]; k <= run[2]; ++k) ray_parts_[next[k]++] = run[0];
+    }
+    return true;
+  }
+
+  /// Fraction along from -> to (sample `k`) of the nearest hit, or 1 for none.
+  double nearestHit(int k, const btVector3& from, const btVector3& to) const {
+    double nearest = 1.0;
+    const btVector3 delta = to - from;
+    btVector3 inverse;
+    unsigned int negative[3];
     for (int axis = 0; axis < 3; ++axis) {
-      if (std::fabs(d[axis]) < 1e-15) {
-        if (std::fabs(o[axis]) > half[axis]) return 1.0;
+      inverse[axis] = delta[axis] == 0 ? BT_LARGE_FLOAT : 1 / delta[axis];
+      negative[axis] = inverse[axis] < 0;
+    }
+    for (int j = first_[k]; j < first_[k + 1]; ++j) {
+      const Part& part = parts_[ray_parts_[j]];
+      if (part.box) {
+        const btVector3 o = part.R_shape_world * (from - part.T_world_shape.getOrigin());
+        nearest = std::min(nearest, slabFraction(o, part.R_shape_world * delta, part.half));
         continue;
       }
-      double t0 = (-half[axis] - o[axis]) / d[axis];
-      double t1 = (half[axis] - o[axis]) / d[axis];
-      if (t0 > t1) std::swap(t0, t1);
-      t_near = std::max(t_near, t0);
-      t_far = std::min(t_far, t1);
-      if (t_near > t_far) return 1.0;
+      btScalar t_enter;
+      if (!btRayAabb2(from, inverse, negative, part.aabb, t_enter, 0, nearest)) continue;
+      btCollisionWorld::ClosestRayResultCallback hit(from, to);
+      hit.m_closestHitFraction = nearest;
+      btTransform T_from = btTransform::getIdentity(), T_to = btTransform::getIdentity();
+      T_from.setOrigin(from);
+      T_to.setOrigin(to);
+      btCollisionWorld::rayTestSingle(T_from, T_to, const_cast<btCollisionObject*>(part.obj),
+                                      part.shape, part.T_world_shape, hit);
+      if (hit.hasHit()) nearest = hit.m_closestHitFraction;
     }
-    return t_near;
+    return nearest;
   }
+
+  bool process(const btBroadphaseProxy* proxy) override {
+    // The filter of a ray callback with Bullet's default group and mask.
+    if ((proxy->m_collisionFilterGroup & btBroadphaseProxy::AllFilter) != 0 &&
+        (btBroadphaseProxy::DefaultFilter & proxy->m_collisionFilterMask) != 0) {
+      objects_.push_back(static_cast<const btCollisionObject*>(proxy->m_clientObject));
+    }
+    return true;
+  }
+
+ private:
+  struct Part {
+    const btCollisionObject* obj;
+    const btCollisionShape* shape;
+    btTransform T_world_shape;
+    bool box;
+    btMatrix3x3 R_shape_world;
+    btVector3 half;  ///< a box's half extents, margin included
+    btVector3 aabb[2];  ///< its bounding box within the scan's reach: minimum, maximum
+  };
+
+  void addShape(const btCollisionObject* obj, const btCollisionShape* shape,
+                const btTransform& T_world_shape) {
+    if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE) {
+      const auto* compound = static_cast<const btCompoundShape*>(shape);
+      for (int i = 0; i < compound->getNumChildShapes(); ++i) {
+        addShape(obj, compound->getChildShape(i), T_world_shape * compound->getChildTransform(i));
+      }
+      return;
+    }
+    Part part{obj, shape, T_world_shape, shape->getShapeType() == BOX_SHAPE_PROXYTYPE,
+              T_world_shape.getBasis().transpose(), {}, {}};
+    if (part.box) part.half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
+    shape->getAabb(T_world_shape, part.aabb[0], part.aabb[1]);
+    // Rays stay within the reach: what lies beyond it is never hit, and a plane's endless
+    // box becomes one whose corners can be turned into the sensor's frame.
+    part.aabb[0].setMax(reach_min_);
+    part.aabb[1].setMin(reach_max_);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (part.aabb[0][axis] > part.aabb[1][axis]) return;
+    }
+    parts_.push_back(part);
+  }
+
+  /// The runs of rays whose azimuths part `p`'s corners span (a box's own corners, any
+  /// other shape's bounding box corners): all rays if it surrounds the sensor's axis, none if
+  /// it lies wholly above or below the scan plane.
+  void addRuns(int p, std::vector<std::array<int, 3>>* runs) const {
+    const Part& part = parts_[p];
+    btVector3 corners[8];
+    for (int c = 0; c < 8; ++c) {
+      const btVector3 sign(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
+      corners[c] = part.box ? part.T_world_shape(part.half * sign)
+                            : btVector3(part.aabb[c & 1 ? 1 : 0].x(), part.aabb[c & 2 ? 1 : 0].y(),
+                                        part.aabb[c & 4 ? 1 : 0].z());
+      corners[c] = T_world_sensor_.invXform(corners[c]);
+    }
+    double z_min = corners[0].z(), z_max = z_min;
+    double azimuth[8];
+    bool around_axis = false;
+    for (int c = 0; c < 8; ++c) {
+      z_min = std::min(z_min, corners[c].z());
+      z_max = std::max(z_max, corners[c].z());
+      if (std::hypot(corners[c].x(), corners[c].y()) < 1e-9) around_axis = true;
+      azimuth[c] = std::atan2(corners[c].y(), corners[c].x());
+    }
+    if (z_min > kPad || z_max < -kPad) return;
+    // The directions to a convex body that does not surround the axis form an arc of less
+    // than half a turn: the largest gap between its corners' azimuths is then the rest.
+    std::sort(azimuth, azimuth + 8);
+    double gap = azimuth[0] + 2 * M_PI - azimuth[7];
+    double arc_start = azimuth[0];
+    for (int c = 1; c < 8; ++c) {
+      if (azimuth[c] - azimuth[c - 1] > gap) {
+        gap = azimuth[c] - azimuth[c - 1];
+        arc_start = azimuth[c];
+      }
+    }
+    if (around_axis || gap <= M_PI || !(increment_ > 0)) {
+      if (samples_ > 0) runs->push_back({p, 0, samples_ - 1});
+      return;
+    }
+    const double lo = arc_start - kPad, hi = arc_start + (2 * M_PI - gap) + kPad;
+    // Every turn of the arc that meets [angle_min, angle_max].
+    const double angle_max = angle_min_ + (samples_ - 1) * increment_;
+    for (double shift = std::floor((angle_min_ - hi) / (2 * M_PI)) * 2 * M_PI;
+         lo + shift <= angle_max; shift += 2 * M_PI) {
+      const double first = std::ceil((lo + shift - angle_min_) / increment_);
+      const double last = std::floor((hi + shift - angle_min_) / increment_);
+      const int k0 = static_cast<int>(std::clamp(first, 0.0, static_cast<double>(samples_)));
+      const int k1 = static_cast<int>(std::clamp(last, -1.0, samples_ - 1.0));
+      if (k0 <= k1) runs->push_back({p, k0, k1});
+    }
+  }
+
+  static constexpr double kPad = 1e-6;  ///< radians and metres kept around each part
+
+  btTransform T_world_sensor_;
+  btVector3 reach_min_, reach_max_;  ///< the box around the sensor that every ray stays in
+  double angle_min_, increment_;
+  int samples_;
+  std::vector<const btCollisionObject*> objects_;
+  std::vector<Part> parts_;
+  std::vector<int> first_;      ///< ray k's parts are ray_parts_[first_[k] .. first_[k + 1])
+  std::vector<int> ray_parts_;
 };
 
 }  // namespace
 
-void castScan(const btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
-              const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan) {
+void castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
+              const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
+              size_t max_listed_parts) {
   scan->frame_id = spec.frame_id;
   scan->angle_min = spec.min_angle_rad;
   scan->angle_max = spec.max_angle_rad;
@@ -101,15 +285,24 @@ void castScan(const btCollisionWorld& world, const Eigen::Isometry3d& T_world_se
   const Eigen::Vector3d origin = T_world_sensor.translation();
   const Eigen::Matrix3d R = T_world_sensor.linear();
   const double span = spec.range_max_m - spec.range_min_m;
+  ScanParts parts(toBt(T_world_sensor), spec.min_angle_rad, scan->angle_increment,
+                  std::max(spec.samples, 0));
+  const bool by_direction = parts.gather(world, spec.range_max_m, max_listed_parts);
   for (int i = 0; i < spec.samples; ++i) {
     const double angle = spec.min_angle_rad + i * scan->angle_increment;
     const Eigen::Vector3d dir = R * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
     const btVector3 from = toBt(origin + dir * spec.range_min_m);
     const btVector3 to = toBt(origin + dir * spec.range_max_m);
-    BoxAwareRayCallback hit(from, to);
-    world.rayTest(from, to, hit);
-    if (!hit.hasHit()) continue;
-    double range = spec.range_min_m + hit.m_closestHitFraction * span;
+    double fraction = 1.0;
+    if (by_direction) {
+      fraction = parts.nearestHit(i, from, to);
+    } else {
+      BoxAwareRayCallback hit(from, to);
+      world.rayTest(from, to, hit);
+      if (hit.hasHit()) fraction = hit.m_closestHitFraction;
+    }
+    if (fraction >= 1.0) continue;
+    double range = spec.range_min_m + fraction * span;
     if (noisy) range += noise(*rng);
     if (spec.range_resolution_m > 0) {
       range = std::round(range / spec.range_resolution_m) * spec.range_resolution_m;
