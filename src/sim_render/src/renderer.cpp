@@ -113,16 +113,19 @@ double Renderer::depthAt(int col, int row) const {
   return inverse_depth > 0.0f ? 1.0 / inverse_depth : std::numeric_limits<double>::infinity();
 }
 
-void Renderer::depthImage(std::vector<float>* depth_m) const {
+void Renderer::depthImage(std::vector<float>* depth_m, float above_m, float below_m) const {
   depth_m->resize(inverse_depth_.size());
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float* in = inverse_depth_.data();
   float* out = depth_m->data();
   const std::size_t n = inverse_depth_.size();
-  // Two branch-free passes in float, so that the compiler divides and selects several
-  // pixels at once (a division inside the condition cannot be vectorised: it could trap).
-  for (std::size_t i = 0; i < n; ++i) out[i] = 1.0f / in[i];
-  for (std::size_t i = 0; i < n; ++i) out[i] = in[i] > 0.0f ? out[i] : nan;
+  // One branch-free pass in float that the compiler vectorises: every pixel is divided (a
+  // division inside the condition could not be: it might trap), then selected. Where
+  // nothing was drawn the inverse depth is 0 and its depth +inf, which no cutoff passes.
+  for (std::size_t i = 0; i < n; ++i) {
+    const float d = 1.0f / in[i];
+    out[i] = (d > above_m && d < below_m) ? d : nan;
+  }
 }
 
 }  // namespace sim_render

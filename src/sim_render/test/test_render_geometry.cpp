@@ -154,6 +154,32 @@ TEST(Render, DepthImageIsTheGroundsDepthPerRowAndNaNWhereTheSkyIs) {
   }
 }
 
+TEST(Render, DepthImageKeepsOnlyDepthsStrictlyBetweenTheCutoffs) {
+  Scene scene;
+  scene.add(ShapeSpec::plane(0, 0, kGreen), Eigen::Isometry3d::Identity());
+  const double height_m = 0.3;
+  Renderer renderer(squareCamera(100.0));
+  std::vector<std::uint8_t> image;
+  renderer.render(scene, cameraAt(Eigen::Vector3d(0, 0, height_m)), image);
+  std::vector<float> depth;
+  renderer.depthImage(&depth, 0.5f, 1.0f);
+  ASSERT_EQ(depth.size(), 640u * 480u);
+  // Row v sees the ground at h * fy / (v - cy): 1.0 m at row 336, 0.5 m at row 432.
+  int kept = 0;
+  for (int row = 241; row < 480; ++row) {
+    const double expected = height_m * 320.0 / (row - 240.0);
+    const float got = depth[row * 640 + 100];
+    if (expected > 0.5 * (1 + 1e-3) && expected < 1.0 * (1 - 1e-3)) {
+      EXPECT_NEAR(got, expected, 1e-4 * expected) << "row " << row;
+      ++kept;
+    } else if (expected < 0.5 * (1 - 1e-3) || expected > 1.0 * (1 + 1e-3)) {
+      EXPECT_TRUE(std::isnan(got)) << "row " << row << " reads " << got;
+    }
+  }
+  EXPECT_EQ(kept, 431 - 337 + 1);  // rows 337 to 431
+  for (int row : {0, 120, 240}) EXPECT_TRUE(std::isnan(depth[row * 640 + 17])) << "row " << row;
+}
+
 TEST(Render, WallFacingTheLightShowsColourTimesAmbientPlusDiffuse) {
   Scene scene;
   scene.lighting().ambient = Eigen::Vector3f(0.3f, 0.3f, 0.3f);

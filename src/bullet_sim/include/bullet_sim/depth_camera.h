@@ -36,10 +36,6 @@ struct PointCloudData {
   std::vector<uint8_t> data;  ///< width * height * kPointStep bytes, little-endian floats
 };
 
-/// Sets to NaN every depth not strictly between depth.cutoff_m and depth.cutoff_max_m, as
-/// Gazebo's plugins do for both the depth image and the point cloud.
-void applyDepthCutoffs(const DepthSpec& depth, std::vector<float>* depth_m);
-
 /// The point cloud of a depth frame of `camera`: the point of pixel (u, v) with depth d
 /// is d * K^-1 [u v 1]^T, K as in cameraInfo(); its colour is that pixel of `image` (all
 /// zero when `image` has another size, as in Gazebo). Stamp and frame are the depth's.

@@ -264,8 +264,8 @@ void CameraRenderer::render(const std::string& robot, size_t index, ImageData* i
     depth->frame_id = camera.frame_id;
     depth->width = camera.width;
     depth->height = camera.height;
-    renderer->depthImage(&depth->depth_m);
-    applyDepthCutoffs(*camera.depth, &depth->depth_m);
+    renderer->depthImage(&depth->depth_m, static_cast<float>(camera.depth->cutoff_m),
+                         static_cast<float>(camera.depth->cutoff_max_m));
   }
   if (rgb8) {
     image->step = 3 * camera.width;

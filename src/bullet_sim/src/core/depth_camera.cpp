@@ -7,13 +7,6 @@
 
 namespace bullet_sim {
 
-void applyDepthCutoffs(const DepthSpec& depth, std::vector<float>* depth_m) {
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  const float low = static_cast<float>(depth.cutoff_m), high = static_cast<float>(depth.cutoff_max_m);
-  // A select the compiler vectorises; NaN stays NaN and only the open interval passes.
-  for (float& d : *depth_m) d = (d > low && d < high) ? d : nan;
-}
-
 void makePointCloud(const CameraSpec& camera, const DepthImageData& depth,
                     const ImageData& image, PointCloudData* cloud) {
   const size_t pixels = static_cast<size_t>(camera.width) * camera.height;

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace sim_render {
@@ -41,8 +42,11 @@ class Renderer {
 
   /// Depth along the camera's +x axis (the optical axis) of every pixel of the last frame,
   /// in metres, row-major, row 0 on top: the frame's depth buffer, no extra pass. NaN where
-  /// nothing was drawn (nothing within the far clip distance). Resizes `depth_m`.
-  void depthImage(std::vector<float>* depth_m) const;
+  /// nothing was drawn (nothing within the far clip distance) and where the depth is not
+  /// strictly between `above_m` and `below_m` (a depth camera's cutoffs; by default any
+  /// depth passes). Resizes `depth_m`.
+  void depthImage(std::vector<float>* depth_m, float above_m = 0.0f,
+                  float below_m = std::numeric_limits<float>::infinity()) const;
 
   const RenderStats& lastStats() const { return stats_; }
 
