@@ -36,6 +36,7 @@ def test_table_and_last_line_give_ratios_to_the_peers():
     ms = [Measurement([k], [(k, k, RTF, "ms" if "camera" in k else "x")]) for k in results]
     text = table(ms, results)
     assert "| node | 100x (90-110) | 0.83x MuJoCo, 5.00x PyBullet |" in text
+    assert "| pybullet | 20.0x (20.0-20.0) |" in text
     assert "| camera_ours | 0.50 ms (0.50-0.50) | 10.00x MuJoCo |" in text
     assert last_line(results) == ("vs_mujoco_node=0.83 vs_mujoco_core=1.33 "
                                   "vs_mujoco_camera=10.00 vs_pybullet_node=5.00")
