@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 using namespace sim_render;
 using namespace sim_render::test;
@@ -28,6 +30,16 @@ void flatLight(Scene& scene) {
 }
 
 const Eigen::Vector4f kRed(1, 0, 0, 1), kBlue(0, 0, 1, 1), kGreen(0, 1, 0, 1);
+
+/// The square camera after a frame of the endless green ground from `height_m` above it.
+std::unique_ptr<Renderer> groundFrom(double height_m) {
+  Scene scene;
+  scene.add(ShapeSpec::plane(0, 0, kGreen), Eigen::Isometry3d::Identity());
+  auto renderer = std::make_unique<Renderer>(squareCamera(100.0));
+  std::vector<std::uint8_t> image;
+  renderer->render(scene, cameraAt(Eigen::Vector3d(0, 0, height_m)), image);
+  return renderer;
+}
 
 }  // namespace
 
@@ -135,14 +147,9 @@ TEST(Render, GroundDepthIsPerspectiveCorrectAndFarClipped) {
 }
 
 TEST(Render, DepthImageIsTheGroundsDepthPerRowAndNaNWhereTheSkyIs) {
-  Scene scene;
-  scene.add(ShapeSpec::plane(0, 0, kGreen), Eigen::Isometry3d::Identity());
   const double height_m = 0.3;
-  Renderer renderer(squareCamera(100.0));
-  std::vector<std::uint8_t> image;
-  renderer.render(scene, cameraAt(Eigen::Vector3d(0, 0, height_m)), image);
   std::vector<float> depth;
-  renderer.depthImage(&depth);
+  groundFrom(height_m)->depthImage(&depth);
   ASSERT_EQ(depth.size(), 640u * 480u);
   for (int row : {0, 120, 240}) EXPECT_TRUE(std::isnan(depth[row * 640 + 17])) << "row " << row;
   // Row v sees the ground at depth h * fy / (v - cy), the same in every column.
@@ -155,14 +162,9 @@ TEST(Render, DepthImageIsTheGroundsDepthPerRowAndNaNWhereTheSkyIs) {
 }
 
 TEST(Render, DepthImageKeepsOnlyDepthsStrictlyBetweenTheCutoffs) {
-  Scene scene;
-  scene.add(ShapeSpec::plane(0, 0, kGreen), Eigen::Isometry3d::Identity());
   const double height_m = 0.3;
-  Renderer renderer(squareCamera(100.0));
-  std::vector<std::uint8_t> image;
-  renderer.render(scene, cameraAt(Eigen::Vector3d(0, 0, height_m)), image);
   std::vector<float> depth;
-  renderer.depthImage(&depth, 0.5f, 1.0f);
+  groundFrom(height_m)->depthImage(&depth, 0.5f, 1.0f);
   ASSERT_EQ(depth.size(), 640u * 480u);
   // Row v sees the ground at h * fy / (v - cy): 1.0 m at row 336, 0.5 m at row 432.
   int kept = 0;
