@@ -100,8 +100,16 @@ class ScanParts : public btBroadphaseAabbCallback {
         first_(samples + 1, 0) {}
 
   /// Lists the objects within `range` of the sensor; false if they make more than
-  /// `max_parts` parts.
+  /// `max_parts` parts, or if the sensor's pose or the range is not finite.
   bool gather(btCollisionWorld& world, double range, size_t max_parts) {
+    const btMatrix3x3& R = T_world_sensor_.getBasis();
+    for (int i = 0; i < 3; ++i) {
+      if (!std::isfinite(R[i][0]) || !std::isfinite(R[i][1]) || !std::isfinite(R[i][2]) ||
+          !std::isfinite(T_world_sensor_.getOrigin()[i])) {
+        return false;
+      }
+    }
+    if (!std::isfinite(range)) return false;
     const btVector3 reach(range, range, range);
     const btVector3& origin = T_world_sensor_.getOrigin();
     reach_min_ = origin - reach;

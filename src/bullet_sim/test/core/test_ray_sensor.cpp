@@ -3,6 +3,7 @@
 // the simulator builds (boxes, compounds, cylinders, spheres, triangle meshes, an endless
 // plane), from level, tilted and upside-down sensors, inside and outside the shapes.
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <vector>
@@ -210,4 +211,19 @@ TEST(ScanParts, ABoxBeyondReachOrBesideTheScanPlaneIsNotSeenAndOneWithinIs) {
   raised.translation().z() = 0.15;
   castScan(world.bullet(), raised, spec, &rng, &scan);
   EXPECT_NEAR(scan.ranges[180], 0.9, 1e-6);
+}
+
+TEST(ScanParts, ASensorPoseThatIsNotFiniteSeesNothingEitherWay) {
+  std::mt19937_64 rng(3);
+  World world;
+  fillWorld(world, rng, 2.5);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(expectSameScan(world.bullet(), pose, lidar(0.0, 6.28319, 360)), 0);
+  pose = Eigen::Isometry3d::Identity();
+  pose.linear()(0, 0) = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(expectSameScan(world.bullet(), pose, lidar(0.0, 6.28319, 360)), 0);
+  // The same sensor at the origin, level, sees the world (checks the fixture).
+  const Eigen::Isometry3d level = Eigen::Isometry3d::Identity();
+  EXPECT_GT(expectSameScan(world.bullet(), level, lidar(0.0, 6.28319, 360)), 0);
 }
