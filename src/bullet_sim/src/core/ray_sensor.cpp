@@ -85,10 +85,10 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
 
 /// The parts a planar scan can hit, gathered once per scan from Bullet's broadphase (the
 /// objects whose bounding boxes lie within range), compounds opened, and each listed for
-/// the rays of the directions it covers as seen from the sensor: a ray then tests the two or
-/// three parts in its direction instead of walking the broadphase tree and slab-testing
-/// every box whose bounding box it crosses. Boxes are intersected by slabs, as above;
-/// every other shape goes to Bullet's narrowphase.
+/// the rays of the directions it covers as seen from the sensor: a ray then tests the few
+/// parts in its direction (on the round track 1.5 boxes a ray on average) instead of a
+/// walk of the broadphase tree and a slab test of every box whose bounding box it crosses.
+/// Boxes are intersected by slabs, as above; every other shape goes to Bullet's narrowphase.
 class ScanParts : public btBroadphaseAabbCallback {
  public:
   /// Sample k of the scan looks along azimuth angle_min + k * increment in the sensor frame.
