@@ -71,6 +71,12 @@ btTransform randomPose(std::mt19937_64& rng, double spread) {
   return btTransform(q, btVector3(position(rng), position(rng), position(rng) * 0.2));
 }
 
+/// A cylinder along z as the simulator makes them: one radius (Bullet's cylinder is round
+/// with the x half extent as radius, but bounds y by the y half extent).
+btCollisionShape* cylinder(World& world, double radius, double half_length) {
+  return world.keep(new btCylinderShapeZ(btVector3(radius, radius, half_length)));
+}
+
 /// Walls, robots (compounds of boxes and cylinders), posts, balls, a meshed crate and the
 /// ground, scattered at random within `spread` of the origin.
 void fillWorld(World& world, std::mt19937_64& rng, double spread) {
@@ -85,8 +91,7 @@ void fillWorld(World& world, std::mt19937_64& rng, double spread) {
     auto* compound = static_cast<btCompoundShape*>(world.keep(new btCompoundShape(false)));
     compound->addChildShape(randomPose(rng, 0.1),
                             world.keep(new btBoxShape(btVector3(size(rng), size(rng), size(rng)))));
-    const btVector3 cylinder_half(size(rng), size(rng), size(rng));
-    compound->addChildShape(randomPose(rng, 0.1), world.keep(new btCylinderShapeZ(cylinder_half)));
+    compound->addChildShape(randomPose(rng, 0.1), cylinder(world, size(rng), size(rng)));
     auto* inner = static_cast<btCompoundShape*>(world.keep(new btCompoundShape(false)));
     inner->addChildShape(randomPose(rng, 0.1),
                          world.keep(new btBoxShape(btVector3(size(rng), size(rng), size(rng)))));
@@ -94,7 +99,7 @@ void fillWorld(World& world, std::mt19937_64& rng, double spread) {
     world.add(compound, randomPose(rng, spread));
   }
   for (int i = 0; i < 5; ++i) {
-    world.add(world.keep(new btCylinderShapeZ(btVector3(size(rng) / 3, size(rng) / 3, size(rng)))),
+    world.add(cylinder(world, size(rng) / 3, size(rng)),
               randomPose(rng, spread));
     world.add(world.keep(new btSphereShape(size(rng) / 2)), randomPose(rng, spread));
   }
@@ -143,10 +148,14 @@ int expectSameScan(btCollisionWorld& world, const Eigen::Isometry3d& pose, const
 
 }  // namespace
 
-TEST(ScanParts, ListedRaysReadWhatRaysWalkingTheBroadphaseRead) {
-  std::mt19937_64 rng(7);
+/// Seeds of the random worlds; the world's spread (1 to 5 m) and the poses come from the seed.
+class ScanPartsInWorld : public ::testing::TestWithParam<int> {};
+INSTANTIATE_TEST_SUITE_P(Seeded, ScanPartsInWorld, ::testing::Range(1, 13));
+
+TEST_P(ScanPartsInWorld, ListedRaysReadWhatRaysWalkingTheBroadphaseRead) {
+  std::mt19937_64 rng(GetParam());
   World world;
-  fillWorld(world, rng, 2.5);
+  fillWorld(world, rng, 1.0 + GetParam() % 5);
   const std::vector<RaySpec> specs = {lidar(0.0, 6.28319, 360), lidar(-1.5, 1.5, 101),
                                       lidar(2.0, 9.0, 250), lidar(0.3, 0.3, 1)};
   int hits = 0, rays = 0;
