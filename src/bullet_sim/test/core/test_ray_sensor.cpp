@@ -1,7 +1,7 @@
 // A scan cast with the shapes in range listed once for the rays in their directions gives
 // the ranges of rays that each walk Bullet's broadphase tree, in worlds of every shape kind
-// the simulator builds (boxes, compounds, cylinders, spheres, triangle meshes, an endless
-// plane), from level, tilted and upside-down sensors, inside and outside the shapes.
+// the simulator builds (boxes, compounds, cylinders, spheres, convex hulls, triangle meshes,
+// an endless plane), from level, tilted and upside-down sensors, inside and outside the shapes.
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -77,8 +77,8 @@ btCollisionShape* cylinder(World& world, double radius, double half_length) {
   return world.keep(new btCylinderShapeZ(btVector3(radius, radius, half_length)));
 }
 
-/// Walls, robots (compounds of boxes and cylinders), posts, balls, a meshed crate and the
-/// ground, scattered at random within `spread` of the origin.
+/// Walls, robots (compounds of boxes and cylinders), posts, balls, a meshed crate, meshed
+/// robot parts and the ground, scattered at random within `spread` of the origin.
 void fillWorld(World& world, std::mt19937_64& rng, double spread) {
   std::uniform_real_distribution<double> size(0.02, 0.6);
   world.add(world.keep(new btStaticPlaneShape(btVector3(0, 0, 1), -0.3)),
@@ -104,6 +104,16 @@ void fillWorld(World& world, std::mt19937_64& rng, double spread) {
     world.add(world.keep(new btSphereShape(size(rng) / 2)), randomPose(rng, spread));
   }
   world.add(world.cubeMesh(0.5), randomPose(rng, spread));
+  // A robot link's mesh becomes a convex hull.
+  for (int i = 0; i < 3; ++i) {
+    auto* hull = static_cast<btConvexHullShape*>(world.keep(new btConvexHullShape()));
+    std::uniform_real_distribution<double> coordinate(-0.3, 0.3);
+    for (int v = 0; v < 12; ++v) {
+      hull->addPoint(btVector3(coordinate(rng), coordinate(rng), coordinate(rng)), false);
+    }
+    hull->recalcLocalAabb();
+    world.add(hull, randomPose(rng, spread));
+  }
   // Seen by no ray (the simulator adds links without collisions this way).
   world.add(world.keep(new btBoxShape(btVector3(5, 5, 5))), btTransform::getIdentity(), 0, 0);
 }
