@@ -30,6 +30,30 @@ double slabFraction(const btVector3& o, const btVector3& d, const btVector3& hal
   return t_near;
 }
 
+/// Fraction of the ray from -> to where it enters the box of half extents `half` posed at
+/// T_world_box, whose rotation transposed is R_box_world: 0 if it starts inside, 1 if it
+/// misses.
+double boxFraction(const btTransform& T_world_box, const btMatrix3x3& R_box_world,
+                   const btVector3& half, const btVector3& from, const btVector3& to) {
+  return slabFraction(R_box_world * (from - T_world_box.getOrigin()), R_box_world * (to - from),
+                      half);
+}
+
+/// Fraction of the ray from -> to where Bullet's narrowphase finds it hits `shape` of `obj`
+/// posed at T_world_shape, if below `nearest`; else `nearest`.
+double narrowphaseFraction(const btCollisionObject* obj, const btCollisionShape* shape,
+                           const btTransform& T_world_shape, const btVector3& from,
+                           const btVector3& to, double nearest) {
+  btCollisionWorld::ClosestRayResultCallback hit(from, to);
+  hit.m_closestHitFraction = nearest;
+  btTransform T_from = btTransform::getIdentity(), T_to = btTransform::getIdentity();
+  T_from.setOrigin(from);
+  T_to.setOrigin(to);
+  btCollisionWorld::rayTestSingle(T_from, T_to, const_cast<btCollisionObject*>(obj), shape,
+                                  T_world_shape, hit);
+  return hit.hasHit() ? hit.m_closestHitFraction : nearest;
+}
+
 /// Bullet's broadphase and filtering, with boxes intersected exactly by slabs:
 /// Bullet's general convex ray cast iterates (about 13k instructions per
 /// box a ray's bounding box touches), and walls and most robot parts are
@@ -53,32 +77,32 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
  private:
   void testShape(const btCollisionObject* obj, const btCollisionShape* shape,
                  const btTransform& T_world_shape) {
-    if (shape->getShapeType() == BOX_SHAPE_PROXYTYPE) {
-      const auto* box = static_cast<const btBoxShape*>(shape);
-      const btMatrix3x3 R_shape_world = T_world_shape.getBasis().transpose();
-      const double t = slabFraction(T_world_shape.invXform(m_rayFromWorld),
-                                    R_shape_world * (m_rayToWorld - m_rayFromWorld),
-                                    box->getHalfExtentsWithMargin());
-      if (t < m_closestHitFraction) {
-        m_closestHitFraction = t;
-        m_collisionObject = obj;
-      }
-    } else if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE) {
+    if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE) {
       const auto* compound = static_cast<const btCompoundShape*>(shape);
       for (int i = 0; i < compound->getNumChildShapes(); ++i) {
         testShape(obj, compound->getChildShape(i), T_world_shape * compound->getChildTransform(i));
       }
+      return;
+    }
+    double t = m_closestHitFraction;
+    if (shape->getShapeType() == BOX_SHAPE_PROXYTYPE) {
+      t = boxFraction(T_world_shape, T_world_shape.getBasis().transpose(),
+                      static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin(),
+                      m_rayFromWorld, m_rayToWorld);
     } else {
       btVector3 aabb_min, aabb_max;
       shape->getAabb(T_world_shape, aabb_min, aabb_max);
-      btScalar t = m_closestHitFraction;
+      btScalar entry = m_closestHitFraction;
       btVector3 unused_normal;
-      if (!btRayAabb(m_rayFromWorld, m_rayToWorld, aabb_min, aabb_max, t, unused_normal)) return;
-      btTransform from = btTransform::getIdentity(), to = btTransform::getIdentity();
-      from.setOrigin(m_rayFromWorld);
-      to.setOrigin(m_rayToWorld);
-      btCollisionWorld::rayTestSingle(from, to, const_cast<btCollisionObject*>(obj), shape,
-                                      T_world_shape, *this);
+      if (!btRayAabb(m_rayFromWorld, m_rayToWorld, aabb_min, aabb_max, entry, unused_normal)) {
+        return;
+      }
+      t = narrowphaseFraction(obj, shape, T_world_shape, m_rayFromWorld, m_rayToWorld,
+                              m_closestHitFraction);
+    }
+    if (t < m_closestHitFraction) {
+      m_closestHitFraction = t;
+      m_collisionObject = obj;
     }
   }
 };
@@ -137,7 +161,7 @@ class ScanParts : public btBroadphaseAabbCallback {
   /// Fraction along from -> to (sample `k`) of the nearest hit, or 1 for none.
   double nearestHit(int k, const btVector3& from, const btVector3& to) const {
     double nearest = 1.0;
-    const btVector3 delta = to - from;
+    const btVector3 delta = to - from;  // btRayAabb2's ray: from + t delta
     btVector3 inverse;
     unsigned int negative[3];
     for (int axis = 0; axis < 3; ++axis) {
@@ -147,20 +171,13 @@ class ScanParts : public btBroadphaseAabbCallback {
     for (int j = first_[k]; j < first_[k + 1]; ++j) {
       const Part& part = parts_[ray_parts_[j]];
       if (part.box) {
-        const btVector3 o = part.R_shape_world * (from - part.T_world_shape.getOrigin());
-        nearest = std::min(nearest, slabFraction(o, part.R_shape_world * delta, part.half));
+        nearest = std::min(
+            nearest, boxFraction(part.T_world_shape, part.R_shape_world, part.half, from, to));
         continue;
       }
       btScalar t_enter;
       if (!btRayAabb2(from, inverse, negative, part.aabb, t_enter, 0, nearest)) continue;
-      btCollisionWorld::ClosestRayResultCallback hit(from, to);
-      hit.m_closestHitFraction = nearest;
-      btTransform T_from = btTransform::getIdentity(), T_to = btTransform::getIdentity();
-      T_from.setOrigin(from);
-      T_to.setOrigin(to);
-      btCollisionWorld::rayTestSingle(T_from, T_to, const_cast<btCollisionObject*>(part.obj),
-                                      part.shape, part.T_world_shape, hit);
-      if (hit.hasHit()) nearest = hit.m_closestHitFraction;
+      nearest = narrowphaseFraction(part.obj, part.shape, part.T_world_shape, from, to, nearest);
     }
     return nearest;
   }
