@@ -54,6 +54,20 @@ double narrowphaseFraction(const btCollisionObject* obj, const btCollisionShape*
   return hit.hasHit() ? hit.m_closestHitFraction : nearest;
 }
 
+/// Calls visit(leaf, T_world_leaf) for `shape` posed at T_world_shape, or for every shape in
+/// it when it is a compound (nested compounds opened too).
+template <class Visit>
+void forEachLeaf(const btCollisionShape* shape, const btTransform& T_world_shape, Visit&& visit) {
+  if (shape->getShapeType() != COMPOUND_SHAPE_PROXYTYPE) {
+    visit(shape, T_world_shape);
+    return;
+  }
+  const auto* compound = static_cast<const btCompoundShape*>(shape);
+  for (int i = 0; i < compound->getNumChildShapes(); ++i) {
+    forEachLeaf(compound->getChildShape(i), T_world_shape * compound->getChildTransform(i), visit);
+  }
+}
+
 /// Bullet's broadphase and filtering, with boxes intersected exactly by slabs:
 /// Bullet's general convex ray cast iterates (about 13k instructions per
 /// box a ray's bounding box touches), and walls and most robot parts are
@@ -69,21 +83,18 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
     const auto* obj = static_cast<const btCollisionObject*>(proxy->m_clientObject);
     const int type = obj->getCollisionShape()->getShapeType();
     if (type != BOX_SHAPE_PROXYTYPE && type != COMPOUND_SHAPE_PROXYTYPE) return true;
-    const_cast<BoxAwareRayCallback*>(this)->testShape(obj, obj->getCollisionShape(),
-                                                      obj->getWorldTransform());
+    auto* self = const_cast<BoxAwareRayCallback*>(this);
+    forEachLeaf(obj->getCollisionShape(), obj->getWorldTransform(),
+                [self, obj](const btCollisionShape* shape, const btTransform& T_world_shape) {
+                  self->testShape(obj, shape, T_world_shape);
+                });
     return false;
   }
 
  private:
+  /// `shape` is not a compound.
   void testShape(const btCollisionObject* obj, const btCollisionShape* shape,
                  const btTransform& T_world_shape) {
-    if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE) {
-      const auto* compound = static_cast<const btCompoundShape*>(shape);
-      for (int i = 0; i < compound->getNumChildShapes(); ++i) {
-        testShape(obj, compound->getChildShape(i), T_world_shape * compound->getChildTransform(i));
-      }
-      return;
-    }
     double t = m_closestHitFraction;
     if (shape->getShapeType() == BOX_SHAPE_PROXYTYPE) {
       t = boxFraction(T_world_shape, T_world_shape.getBasis().transpose(),
@@ -140,7 +151,10 @@ class ScanParts : public btBroadphaseAabbCallback {
     reach_max_ = origin + reach;
     world.getBroadphase()->aabbTest(reach_min_, reach_max_, *this);
     for (const btCollisionObject* obj : objects_) {
-      addShape(obj, obj->getCollisionShape(), obj->getWorldTransform());
+      forEachLeaf(obj->getCollisionShape(), obj->getWorldTransform(),
+                  [this, obj](const btCollisionShape* shape, const btTransform& T_world_shape) {
+                    addShape(obj, shape, T_world_shape);
+                  });
       if (parts_.size() > max_parts) return false;
     }
     // Each part's runs of rays, then the parts of each ray in one array.
@@ -202,15 +216,9 @@ class ScanParts : public btBroadphaseAabbCallback {
     btVector3 aabb[2];  ///< its bounding box within the scan's reach: minimum, maximum
   };
 
+  /// `shape` is not a compound.
   void addShape(const btCollisionObject* obj, const btCollisionShape* shape,
                 const btTransform& T_world_shape) {
-    if (shape->getShapeType() == COMPOUND_SHAPE_PROXYTYPE) {
-      const auto* compound = static_cast<const btCompoundShape*>(shape);
-      for (int i = 0; i < compound->getNumChildShapes(); ++i) {
-        addShape(obj, compound->getChildShape(i), T_world_shape * compound->getChildTransform(i));
-      }
-      return;
-    }
     Part part{obj, shape, T_world_shape, shape->getShapeType() == BOX_SHAPE_PROXYTYPE,
               T_world_shape.getBasis().transpose(), {}, {}};
     if (part.box) part.half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
