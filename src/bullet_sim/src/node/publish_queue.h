@@ -9,6 +9,8 @@
 #include <mutex>
 #include <thread>
 
+#include <boost/make_shared.hpp>
+#include <boost/shared_ptr.hpp>
 #include <ros/publisher.h>
 
 namespace bullet_sim_node {
@@ -52,10 +54,16 @@ class PublishQueue {
   };
 
   void push(std::function<void()> publish);
-  /// Queues `publisher.publish(message)`; `message` is a message or a shared pointer to one.
+  /// Queues `publisher.publish(message)`. A message is published as a shared pointer, so
+  /// that subscribers in the same process (nodelets) get it without serialisation or copy;
+  /// nothing may change it once queued.
+  template <class Message>
+  void publish(const ros::Publisher& publisher, boost::shared_ptr<Message> message) {
+    push([publisher, m = std::move(message)] { publisher.publish(m); });
+  }
   template <class Message>
   void publish(const ros::Publisher& publisher, Message message) {
-    push([publisher, m = std::move(message)] { publisher.publish(m); });
+    publish(publisher, boost::make_shared<const Message>(std::move(message)));
   }
   /// Returns when every call queued before it has run (without waiting for a linger).
   void flush();

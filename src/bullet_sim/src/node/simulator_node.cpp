@@ -1,0 +1,73 @@
+#include "simulator_node.h"
+
+#include <bullet_sim/robot_spec.h>
+#include <bullet_sim/world_spec.h>
+
+#include <ros/console.h>
+
+#include <string>
+#include <vector>
+
+namespace bullet_sim_node {
+namespace {
+
+void logWarnings(const std::string& source, const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings) ROS_WARN("%s: %s", source.c_str(), warning.c_str());
+}
+
+void spawnStartRobot(const Config& config, SimRunner* runner) {
+  const bullet_sim::RobotSpec robot =
+      bullet_sim::parseRobot(config.robot_description, "robot_description");
+  logWarnings("robot_description", robot.warnings);
+  bullet_sim::Pose3 pose;
+  pose.position = {config.spawn_x_m, config.spawn_y_m, 0.0};
+  pose.orientation = Eigen::AngleAxisd(config.spawn_yaw_rad, Eigen::Vector3d::UnitZ());
+  runner->spawn(config.robot_name, robot, pose, "");
+}
+
+}  // namespace
+
+SimulatorNode::SimulatorNode(const Config& config, const ros::NodeHandle& nh,
+                             const ros::NodeHandle& gazebo_nh)
+    : pacer_(config.real_time_factor) {
+  const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(config.world_file);
+  logWarnings(config.world_file, world.warnings);
+  bullet_sim::SimConfig sim_config;
+  sim_config.physics_step_s =
+      config.physics_step_s > 0 ? config.physics_step_s : world.max_step_size_s;
+  sim_config.seed = static_cast<uint64_t>(config.seed);
+  sim_config.cmd_vel_timeout_s = config.cmd_vel_timeout_s;
+  sim_ = std::make_unique<bullet_sim::Simulation>(world, sim_config);
+  runner_ = std::make_unique<SimRunner>(*sim_, nh, gazebo_nh, config.start_paused,
+                                        config.model_states_rate_hz);
+  runner_->logSimulationWarnings();  // how the world's movable models were built
+  releaseParserMemory();
+  if (!config.robot_name.empty()) spawnStartRobot(config, runner_.get());
+  physics_services_ = std::make_unique<PhysicsServices>(*runner_, pacer_, gazebo_nh);
+  model_services_ = std::make_unique<ModelServices>(*runner_, gazebo_nh);
+  link_joint_services_ = std::make_unique<LinkJointServices>(*runner_, gazebo_nh);
+  status_ = std::make_unique<StatusReporter>(*sim_, config.status_period_s);
+  world_markers_ = std::make_unique<WorldMarkersIo>(*sim_, gazebo_nh);
+  for (const bullet_sim::WorldModel& model : world.models) world_markers_->track(model.name);
+  const std::string robot = config.robot_name.empty() ? "no robot" : "robot " + config.robot_name;
+  ROS_INFO("world %s (%s), %s, physics step %g s, real-time factor %g%s", world.name.c_str(),
+           config.world_file.c_str(), robot.c_str(), sim_config.physics_step_s,
+           config.real_time_factor, config.start_paused ? ", paused" : "");
+  runner_->publishClock();
+}
+
+void SimulatorNode::spinOnce(ros::CallbackQueue& callbacks) {
+  if (runner_->paused()) {
+    callbacks.callAvailable(ros::WallDuration(0.01));
+    runner_->publishClock();
+    pacer_.restart(sim_->timeS());
+  } else {
+    callbacks.callAvailable();
+    runner_->step();
+    pacer_.waitUntil(sim_->timeS());
+  }
+  status_->maybeReport();
+  world_markers_->update();
+}
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,51 @@
+// The whole simulator as bullet_sim_node runs it.
+#pragma once
+
+#include "config.h"
+#include "link_joint_services.h"
+#include "model_services.h"
+#include "pacer.h"
+#include "physics_services.h"
+#include "sim_runner.h"
+#include "status_reporter.h"
+#include "world_markers_io.h"
+
+#include <bullet_sim/simulation.h>
+
+#include <ros/callback_queue.h>
+#include <ros/node_handle.h>
+
+#include <memory>
+
+namespace bullet_sim_node {
+
+/// The world's simulation with its topics, tf and /gazebo services. Every subscriber and
+/// service lives on the callback queue of the NodeHandles it is given (`nh` for the
+/// robots' topics, `gazebo_nh` for /gazebo), and only spinOnce() calls them, between
+/// steps, so a service never sees a half-made step.
+class SimulatorNode {
+ public:
+  /// Loads the world, spawns robot_description when ~robot_name is set and advertises
+  /// everything. Throws bullet_sim::LoadError (the world or robot) naming the file,
+  /// element and value.
+  SimulatorNode(const Config& config, const ros::NodeHandle& nh, const ros::NodeHandle& gazebo_nh);
+  SimulatorNode(const SimulatorNode&) = delete;
+  SimulatorNode& operator=(const SimulatorNode&) = delete;
+
+  /// One turn of the loop: runs the waiting callbacks of `callbacks`, then (unless
+  /// paused) steps once and waits for the wall clock at the real-time factor. Paused, it
+  /// waits up to 10 ms for a callback instead and keeps /clock published.
+  void spinOnce(ros::CallbackQueue& callbacks);
+
+ private:
+  std::unique_ptr<bullet_sim::Simulation> sim_;
+  std::unique_ptr<SimRunner> runner_;
+  Pacer pacer_;
+  std::unique_ptr<PhysicsServices> physics_services_;
+  std::unique_ptr<ModelServices> model_services_;
+  std::unique_ptr<LinkJointServices> link_joint_services_;
+  std::unique_ptr<StatusReporter> status_;
+  std::unique_ptr<WorldMarkersIo> world_markers_;
+};
+
+}  // namespace bullet_sim_node
