@@ -1,7 +1,7 @@
 // bullet_sim_node: runs the Bullet simulation of a world, publishing /clock and the
 // robots' sensors and offering gazebo_ros's services and topics under /gazebo. A robot
 // is spawned from robot_description at start only when ~robot_name is set; others arrive
-// through /gazebo/spawn_urdf_model.
+// through /gazebo/spawn_urdf_model. The bullet_sim/Simulator nodelet runs the same.
 #include "config.h"
 #include "simulator_node.h"
 

@@ -1,4 +1,4 @@
-// The whole simulator as bullet_sim_node runs it.
+// The whole simulator as bullet_sim_node and the bullet_sim/Simulator nodelet run it.
 #pragma once
 
 #include "config.h"
