@@ -7,7 +7,16 @@ at the spawn pose; robots 2..N are added through /gazebo/spawn_urdf_model
 the command's twist and every topic arrived at its rate, then prints the real-time factor
 last.
 
-Usage: multi_robot.py LISTENER_BINARY ROBOTS SIM_SECONDS   (BENCH_ROS_PORT, default 11461)
+With --in-process the listener loads the simulator as the bullet_sim/Simulator nodelet into
+its own process (bench_rate_listener --simulator), so that every subscription is in-process:
+the messages reach it as the objects the simulator made, without serialisation or a socket.
+
+With --depth every Burger's camera is a depth camera (ros_bench.depth_burger_urdf), and its
+colour and depth images and point cloud (640 x 480, 30 Hz) are subscribed too; it prints
+which share of them arrived (a publisher drops what its subscriber cannot take in time).
+
+Usage: multi_robot.py [--in-process] [--depth] LISTENER_BINARY ROBOTS SIM_SECONDS
+       (BENCH_ROS_PORT, default 11461)
 """
 import os
 import subprocess
@@ -19,6 +28,8 @@ import ros_bench
 import scenario
 
 RATES_HZ = {"odom": 30.0, "scan": 5.0, "imu": 200.0, "joint_states": 30.0}
+CAMERA_RATES_HZ = {"camera/image_raw": 30.0, "camera/depth/image_raw": 30.0,
+                   "camera/points": 30.0}
 WARMUP_S = 1.0
 
 
@@ -61,6 +72,15 @@ def spawn_others(env, urdf_file, poses):
     return publishers
 
 
+def unpause():
+    """Starts the in-process simulator once every robot has its command (the listener
+    only unpauses a simulator of another process)."""
+    import rospy
+    from std_srvs.srv import Empty
+    rospy.wait_for_service("/gazebo/unpause_physics", timeout=30)
+    rospy.ServiceProxy("/gazebo/unpause_physics", Empty)()
+
+
 def check_driving(count):
     """Raises unless every robot moves at the command's twist (a robot at rest sleeps and
     would cost nothing, flattering the figure)."""
@@ -81,40 +101,83 @@ def check_driving(count):
                                            scenario.CMD_ANGULAR_RADPS))
 
 
-def check_rates(output, count):
-    """Raises unless every robot's topics (and /tf for all) came at their rates."""
+def check_rates(output, count, depth):
+    """Raises unless every robot's topics (and /tf for all) came at their rates. The camera
+    topics may come slower: their publishers keep one message and drop the rest when the
+    subscriber cannot take them as fast (as Gazebo's camera plugins do); returns how many
+    of them arrived, as a fraction of those made (1.0 when all did)."""
     rates = {line.split()[0]: float(line.split()[1]) for line in output.splitlines()
              if line.startswith("/") and "Hz" in line}
-    expected = {"/tf": 30.0 * count}
+    expected, camera = {"/tf": 30.0 * count}, {}
     for ns in namespaces(count):
         prefix = "/" if ns == "/" else "/%s/" % ns
         expected.update({prefix + topic: hz for topic, hz in RATES_HZ.items()})
+        if depth:
+            camera.update({prefix + topic: hz for topic, hz in CAMERA_RATES_HZ.items()})
     for topic, hz in expected.items():
         if not abs(rates.get(topic, 0.0) - hz) <= 0.1 * hz:
             raise scenario.SanityError("%s came at %.1f Hz (sim time), not %.0f Hz"
                                        % (topic, rates.get(topic, 0.0), hz))
+    for topic, hz in camera.items():
+        if not 0 < rates.get(topic, 0.0) <= 1.1 * hz:
+            raise scenario.SanityError("%s came at %.1f Hz (sim time); it is made at %.0f Hz"
+                                       % (topic, rates.get(topic, 0.0), hz))
+    if not camera:
+        return 1.0
+    return min(1.0, sum(rates[t] for t in camera) / sum(camera.values()))
+
+
+def simulator_parameters(pose):
+    """bullet_sim_node's private parameters: as fast as possible, paused until the listener
+    has every subscription, the first robot from robot_description at `pose`."""
+    x, y, yaw = pose
+    return {"world_file": ros_bench.WORLD, "real_time_factor": "0", "paused": "true",
+            "robot_name": "turtlebot3_burger", "spawn_x": "%g" % x, "spawn_y": "%g" % y,
+            "spawn_yaw": "%g" % yaw}
 
 
 def main():
-    listener, count, sim_s = sys.argv[1], int(sys.argv[2]), float(sys.argv[3])
+    args = sys.argv[1:]
+    options = set()
+    while args and args[0] in ("--in-process", "--depth"):
+        options.add(args.pop(0))
+    in_process, depth = "--in-process" in options, "--depth" in options
+    listener, count, sim_s = args[0], int(args[1]), float(args[2])
     port = int(os.environ.get("BENCH_ROS_PORT", "11461"))
     env = ros_bench.ros_env(port)
     poses = scenario.circle_starts(ros_bench.WORLD, count)
     work = tempfile.mkdtemp()
+    parameters = simulator_parameters(poses[0])
+    listen = ([listener] + (["--camera"] if depth else []) + [str(WARMUP_S), str(sim_s)]
+              + namespaces(count))
     with ros_bench.Processes() as procs:
         ros_bench.start_master(procs, env, port)
         urdf_file = ros_bench.burger_urdf(env, os.path.join(work, "burger.urdf"))
+        if depth:
+            urdf_file = ros_bench.depth_burger_urdf(urdf_file, os.path.join(work, "depth.urdf"))
         subprocess.run(["rosparam", "set", "robot_description", "-t", urdf_file], env=env,
                        check=True)
-        x, y, yaw = poses[0]
-        procs.start(["rosrun", "bullet_sim", "bullet_sim_node", "_world_file:=" + ros_bench.WORLD,
-                     "_real_time_factor:=0", "_paused:=true", "_robot_name:=turtlebot3_burger",
-                     "_spawn_x:=%g" % x,
-                     "_spawn_y:=%g" % y, "_spawn_yaw:=%g" % yaw], env)
-        spawn_others(env, urdf_file, poses)
-        result = subprocess.run([listener, str(WARMUP_S), str(sim_s)] + namespaces(count),
-                                env=env, stdout=subprocess.PIPE, universal_newlines=True,
-                                timeout=900)
+        if in_process:
+            # The nodelet is named /gazebo: its private parameters are /gazebo/...
+            for name, value in parameters.items():
+                subprocess.run(["rosparam", "set", "/gazebo/" + name, value], env=env,
+                               check=True)
+            output = open(os.path.join(work, "rates.txt"), "w+")
+            listening = procs.start([listener, "--simulator"] + listen[1:], env, stdout=output)
+            spawn_others(env, urdf_file, poses)
+            unpause()
+            # It prints its figures and keeps the simulator running for check_driving.
+            ros_bench.wait_for(lambda: listening.poll() is not None
+                               or "real-time factor" in open(output.name).read(),
+                               "bench_rate_listener's figures", timeout_s=900, poll_s=0.2)
+            result = subprocess.CompletedProcess(listening.args, listening.poll() or 0,
+                                                 open(output.name).read())
+        else:
+            procs.start(["rosrun", "bullet_sim", "bullet_sim_node"]
+                        + ["_%s:=%s" % item for item in parameters.items()], env)
+            spawn_others(env, urdf_file, poses)
+            result = subprocess.run(listen, env=env, stdout=subprocess.PIPE,
+                                    universal_newlines=True, timeout=900)
         if result.returncode != 0:
             sys.exit("bench_rate_listener failed (exit %d)" % result.returncode)
         try:
@@ -122,10 +185,13 @@ def main():
         except scenario.SanityError as error:
             sys.exit("sanity check failed: %s" % error)
     try:
-        check_rates(result.stdout, count)
+        delivered = check_rates(result.stdout, count, depth)
     except scenario.SanityError as error:
         sys.exit("sanity check failed: %s" % error)
-    print("%d robots: every topic at its rate" % count)
+    print("%d robots: odometry, scan, IMU, joint states and tf at their rates" % count)
+    if depth:
+        print("camera images and point clouds delivered: %.0f %% of those made"
+              % (100 * delivered))
     print(result.stdout.strip().splitlines()[-1])
 
 

@@ -3,21 +3,32 @@
 // when none is), and to /tf and /clock (the simulator starts paused); once every
 // subscription is connected it unpauses the simulation, counts the messages stamped inside
 // a window of sim time and prints each topic's rate in sim time, then the window's
-// real-time factor as the last line.
-// Usage: bench_rate_listener WARMUP_SIM_S MEASURE_SIM_S [NAMESPACE...]   ("/" for the root)
+// real-time factor as the last line. With --simulator it first loads the bullet_sim/Simulator
+// nodelet into its own process, as /gazebo (parameters in /gazebo/...), so that its
+// subscriptions are in-process: messages arrive without serialisation or a socket. The
+// caller then unpauses it (once its robots have their commands), and it keeps running
+// after the figures until SIGINT.
+// With --camera it also subscribes to a depth camera's camera/image_raw,
+// camera/depth/image_raw and camera/points in each namespace.
+// Usage: bench_rate_listener [--simulator] [--camera] WARMUP_SIM_S MEASURE_SIM_S
+//        [NAMESPACE...]   ("/" for the root)
 #include <nav_msgs/Odometry.h>
+#include <nodelet/loader.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
+#include <sensor_msgs/PointCloud2.h>
 #include <std_srvs/Empty.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,9 +97,27 @@ void spinFor(std::chrono::milliseconds period) {
 
 int main(int argc, char** argv) {
   ros::init(argc, argv, "bench_rate_listener", ros::init_options::AnonymousName);
+  bool in_process = false, camera = false;
+  for (; argc > 1 && std::string(argv[1]).rfind("--", 0) == 0; --argc, ++argv) {
+    const std::string option = argv[1];
+    if (option == "--simulator") {
+      in_process = true;
+    } else if (option == "--camera") {
+      camera = true;
+    } else {
+      argc = 0;  // usage
+    }
+  }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_rate_listener WARMUP_SIM_S MEASURE_SIM_S [NAMESPACE...]\n");
+    std::fprintf(stderr,
+                 "usage: bench_rate_listener [--simulator] [--camera] WARMUP_SIM_S "
+                 "MEASURE_SIM_S [NAMESPACE...]\n");
     return 2;
+  }
+  std::unique_ptr<nodelet::Loader> simulator;
+  if (in_process) {
+    simulator = std::make_unique<nodelet::Loader>(false);
+    if (!simulator->load("/gazebo", "bullet_sim/Simulator", ros::M_string(), {})) return 1;
   }
   Window window;
   window.start_s = std::stod(argv[1]);
@@ -104,6 +133,11 @@ int main(int argc, char** argv) {
     subs.push_back(countHeader<sensor_msgs::LaserScan>(nh, ns + "scan", window));
     subs.push_back(countHeader<sensor_msgs::Imu>(nh, ns + "imu", window));
     subs.push_back(countHeader<sensor_msgs::JointState>(nh, ns + "joint_states", window));
+    if (camera) {  // a depth camera's colour and depth images and point cloud
+      subs.push_back(countHeader<sensor_msgs::Image>(nh, ns + "camera/image_raw", window));
+      subs.push_back(countHeader<sensor_msgs::Image>(nh, ns + "camera/depth/image_raw", window));
+      subs.push_back(countHeader<sensor_msgs::PointCloud2>(nh, ns + "camera/points", window));
+    }
   }
   window.counts["/tf"] = 0;
   const boost::function<void(const tf2_msgs::TFMessage::ConstPtr&)> tf_callback =
@@ -115,9 +149,11 @@ int main(int argc, char** argv) {
   subs.push_back(nh.subscribe<tf2_msgs::TFMessage>("/tf", 1000, tf_callback));
   subs.push_back(nh.subscribe<rosgraph_msgs::Clock>("/clock", 100, clock_callback));
   if (!waitForPublishers(subs)) return 1;
-  if (!ros::service::waitForService("/gazebo/unpause_physics", ros::Duration(60))) return 1;
-  std_srvs::Empty unpause;
-  ros::service::call("/gazebo/unpause_physics", unpause);
+  if (!simulator) {
+    if (!ros::service::waitForService("/gazebo/unpause_physics", ros::Duration(60))) return 1;
+    std_srvs::Empty unpause;
+    ros::service::call("/gazebo/unpause_physics", unpause);
+  }
   const WallClock::time_point run_deadline = WallClock::now() + std::chrono::minutes(10);
   while (ros::ok() && !window.done && WallClock::now() < run_deadline)
     ros::getGlobalCallbackQueue()->callAvailable(ros::WallDuration(0.01));
@@ -132,5 +168,12 @@ int main(int argc, char** argv) {
   const double sim_s = window.sim_end_s - window.sim_start_s;
   std::printf("sim %.2f s in %.3f s wall\n", sim_s, wall_s);
   std::printf("real-time factor %.1f\n", sim_s / wall_s);
+  if (simulator) {
+    // The simulator lives in this process: it runs on (unwatched) until SIGINT, so that
+    // the caller can still ask it how the robots move.
+    std::fflush(stdout);
+    subs.clear();
+    while (ros::ok()) ros::WallDuration(0.05).sleep();
+  }
   return 0;
 }
