@@ -128,8 +128,9 @@ def check_rates(output, count, depth):
 
 
 def simulator_parameters(pose):
-    """bullet_sim_node's private parameters: as fast as possible, paused until the listener
-    has every subscription, the first robot from robot_description at `pose`."""
+    """bullet_sim_node's private parameters: as fast as possible, paused until the robots
+    have their commands and the listener its subscriptions, the first robot from
+    robot_description at `pose`."""
     x, y, yaw = pose
     return {"world_file": ros_bench.WORLD, "real_time_factor": "0", "paused": "true",
             "robot_name": "turtlebot3_burger", "spawn_x": "%g" % x, "spawn_y": "%g" % y,
