@@ -19,6 +19,7 @@ Usage: multi_robot.py [--in-process] [--depth] LISTENER_BINARY ROBOTS SIM_SECOND
        (BENCH_ROS_PORT, default 11461)
 """
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -31,6 +32,8 @@ RATES_HZ = {"odom": 30.0, "scan": 5.0, "imu": 200.0, "joint_states": 30.0}
 CAMERA_RATES_HZ = {"camera/image_raw": 30.0, "camera/depth/image_raw": 30.0,
                    "camera/points": 30.0}
 WARMUP_S = 1.0
+# The last line of bench_rate_listener's figures.
+FIGURES_END = re.compile(r"^real-time factor [0-9.]+$", re.M)
 
 
 def namespaces(count):
@@ -168,8 +171,10 @@ def main():
             spawn_others(env, urdf_file, poses)
             unpause()
             # It prints its figures and keeps the simulator running for check_driving.
+            # (the simulator's own log lines, in the same output, speak of its real-time
+            # factor too: the listener's figures end with a line of its own)
             ros_bench.wait_for(lambda: listening.poll() is not None
-                               or "real-time factor" in open(output.name).read(),
+                               or FIGURES_END.search(open(output.name).read()),
                                "bench_rate_listener's figures", timeout_s=900, poll_s=0.2)
             result = subprocess.CompletedProcess(listening.args, listening.poll() or 0,
                                                  open(output.name).read())
@@ -193,7 +198,7 @@ def main():
     if depth:
         print("camera images and point clouds delivered: %.0f %% of those made"
               % (100 * delivered))
-    print(result.stdout.strip().splitlines()[-1])
+    print(FIGURES_END.findall(result.stdout)[-1])
 
 
 if __name__ == "__main__":
