@@ -63,7 +63,12 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
   const Lighting& lighting = scene.lighting();
   const std::uint8_t sky[3] = {toByte(lighting.background.x()), toByte(lighting.background.y()),
                                toByte(lighting.background.z())};
-  for (std::size_t i = 0; i < pixels; ++i) std::copy(sky, sky + 3, &out_rgb8[3 * i]);
+  // The first row pixel by pixel, the others copied from it: a row is one memcpy.
+  const std::size_t row_bytes = static_cast<std::size_t>(camera_.width) * 3;
+  for (std::size_t i = 0; i < row_bytes; i += 3) std::copy(sky, sky + 3, &out_rgb8[i]);
+  for (std::size_t offset = row_bytes; offset < pixels * 3; offset += row_bytes) {
+    std::copy(out_rgb8.begin(), out_rgb8.begin() + row_bytes, out_rgb8.begin() + offset);
+  }
 
   stats_ = RenderStats();
   const detail::PolygonRasterizer rasterizer(camera_);

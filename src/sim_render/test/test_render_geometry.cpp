@@ -303,3 +303,26 @@ int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
   return RUN_ALL_TESTS();
 }
+
+TEST(Render, EveryPixelNothingCoversIsTheBackground) {
+  Scene scene;
+  flatLight(scene);
+  scene.lighting().background = Eigen::Vector3f(0.2f, 0.6f, 1.0f);  // bytes 51, 153, 255
+  scene.add(ShapeSpec::box(1, 1, 1, kRed), at(3, 0, 0));
+  CameraModel camera = squareCamera();
+  camera.width = 37;  // odd sizes: no row length or count is a multiple of anything
+  camera.height = 23;
+  Renderer renderer(camera);
+  std::vector<std::uint8_t> image;
+  renderer.render(scene, Eigen::Isometry3d::Identity(), image);
+  // Then the box out of view: the same buffer again, now all background.
+  renderer.render(scene, at(0, 0, 10), image);
+  ASSERT_EQ(image.size(), 37u * 23u * 3u);
+  int background = 0;
+  for (int row = 0; row < 23; ++row) {
+    for (int col = 0; col < 37; ++col) {
+      background += pixel(image, 37, col, row) == (Rgb{51, 153, 255});
+    }
+  }
+  EXPECT_EQ(background, 37 * 23);
+}
