@@ -124,13 +124,16 @@ void PolygonRasterizer::fill(const Eigen::Vector2d* screen, int count,
     float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
     std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
     const float inverse_far = inverse_far_;
+    // The colour in registers: stores through `pixel` could otherwise change what `rgb`
+    // points to, and it would be read again for every pixel.
+    const std::uint8_t r = rgb[0], g = rgb[1], b = rgb[2];
     for (int col = col_begin; col < col_end; ++col, pixel += 3) {
       const float inverse_depth = base + du * static_cast<float>(col - col_begin);
       if (inverse_depth > depth[col] && inverse_depth >= inverse_far) {
         depth[col] = inverse_depth;
-        pixel[0] = rgb[0];
-        pixel[1] = rgb[1];
-        pixel[2] = rgb[2];
+        pixel[0] = r;
+        pixel[1] = g;
+        pixel[2] = b;
       }
     }
   }

@@ -79,9 +79,22 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
   const Eigen::Vector3d to_light =
       light_norm > 0 ? Eigen::Vector3d(-lighting.direction / light_norm) : Eigen::Vector3d::Zero();
 
-  for (const SceneShape& shape : scene.shapes()) {
+  // Nearest first (by the far side of a shape's bounding sphere, so that the ground and
+  // other large shapes come last): pixels of what lies behind then fail the depth test and
+  // are not written twice. Ties keep the scene's order.
+  draw_order_.clear();
+  const std::vector<SceneShape>& shapes = scene.shapes();
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    const Eigen::Vector3d centre = T_camera_world * shapes[i].T_world_shape.translation();
+    const double radius = shapes[i].mesh.bounding_radius_m;
+    if (sphereOutside(frustum, centre, radius)) continue;
+    draw_order_.push_back({centre.norm() + radius, i});
+  }
+  std::sort(draw_order_.begin(), draw_order_.end());
+
+  for (const std::pair<double, std::size_t>& entry : draw_order_) {
+    const SceneShape& shape = shapes[entry.second];
     const Eigen::Isometry3d T_camera_shape = T_camera_world * shape.T_world_shape;
-    if (sphereOutside(frustum, T_camera_shape.translation(), shape.mesh.bounding_radius_m)) continue;
     ++stats_.shapes_drawn;
 
     const Mesh& mesh = shape.mesh;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace sim_render {
@@ -54,6 +55,7 @@ class Renderer {
   CameraModel camera_;
   std::vector<float> inverse_depth_;
   std::vector<Eigen::Vector3d> camera_vertices_;
+  std::vector<std::pair<double, std::size_t>> draw_order_;  ///< (sort key, shape index)
   RenderStats stats_;
 };
 
