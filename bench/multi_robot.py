@@ -34,6 +34,8 @@ CAMERA_RATES_HZ = {"camera/image_raw": 30.0, "camera/depth/image_raw": 30.0,
 WARMUP_S = 1.0
 # The last line of bench_rate_listener's figures.
 FIGURES_END = re.compile(r"^real-time factor [0-9.]+$", re.M)
+# bench_rate_listener --simulator: its subscriptions are made.
+SUBSCRIBED = re.compile(r"^subscribed$", re.M)
 
 
 def namespaces(count):
@@ -168,6 +170,10 @@ def main():
                                check=True)
             output = open(os.path.join(work, "rates.txt"), "w+")
             listening = procs.start([listener, "--simulator"] + listen[1:], env, stdout=output)
+            # Spawning while it subscribes would let roscpp link some subscriptions twice.
+            ros_bench.wait_for(lambda: listening.poll() is not None
+                               or SUBSCRIBED.search(open(output.name).read()),
+                               "bench_rate_listener's subscriptions", timeout_s=120, poll_s=0.05)
             spawn_others(env, urdf_file, poses)
             unpause()
             # It prints its figures and keeps the simulator running for check_driving.

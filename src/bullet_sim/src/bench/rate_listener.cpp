@@ -5,8 +5,9 @@
 // a window of sim time and prints each topic's rate in sim time, then the window's
 // real-time factor as the last line. With --simulator it first loads the bullet_sim/Simulator
 // nodelet into its own process, as /gazebo (parameters in /gazebo/...), so that its
-// subscriptions are in-process: messages arrive without serialisation or a socket. The
-// caller then unpauses it (once its robots have their commands), and it keeps running
+// subscriptions are in-process: messages arrive without serialisation or a socket; it
+// prints "subscribed" once its subscriptions are made. The caller then spawns the other
+// robots and unpauses it (once its robots have their commands), and it keeps running
 // after the figures until SIGINT.
 // With --camera it also subscribes to a depth camera's camera/image_raw,
 // camera/depth/image_raw and camera/points in each namespace.
@@ -148,6 +149,13 @@ int main(int argc, char** argv) {
       [&window](const rosgraph_msgs::Clock::ConstPtr& msg) { window.onClock(*msg); };
   subs.push_back(nh.subscribe<tf2_msgs::TFMessage>("/tf", 1000, tf_callback));
   subs.push_back(nh.subscribe<rosgraph_msgs::Clock>("/clock", 100, clock_callback));
+  if (simulator) {
+    // roscpp links a subscription twice to a publisher of its own process when the
+    // publisher is advertised while the subscription registers with the master (each
+    // message then arrives twice): the caller spawns the other robots only after this line.
+    std::printf("subscribed\n");
+    std::fflush(stdout);
+  }
   if (!waitForPublishers(subs)) return 1;
   if (!simulator) {
     if (!ros::service::waitForService("/gazebo/unpause_physics", ros::Duration(60))) return 1;
