@@ -87,8 +87,11 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const Eigen::Vector3d centre = T_camera_world * shapes[i].T_world_shape.translation();
     const double radius = shapes[i].mesh.bounding_radius_m;
-    if (sphereOutside(frustum, centre, radius)) continue;
-    draw_order_.push_back({centre.norm() + radius, i});
+    const double key = centre.norm() + radius;
+    // A pose that is not finite (a simulation that blew up) has nothing to draw, and a NaN
+    // key would break the sort.
+    if (!std::isfinite(key) || sphereOutside(frustum, centre, radius)) continue;
+    draw_order_.push_back({key, i});
   }
   std::sort(draw_order_.begin(), draw_order_.end());
 

@@ -326,3 +326,22 @@ TEST(Render, EveryPixelNothingCoversIsTheBackground) {
   }
   EXPECT_EQ(background, 37 * 23);
 }
+
+TEST(Render, ShapesWithPosesThatAreNotFiniteAreLeftOutAndTheOthersDrawnInDepthOrder) {
+  Scene scene;
+  flatLight(scene);
+  // 40 small boxes in a row along the optical axis (more than a sort handles by insertion),
+  // every third one with a NaN or infinite position, as after a simulation blew up.
+  for (int k = 0; k < 40; ++k) {
+    Eigen::Isometry3d pose = at(2.0 + 0.5 * k, 0, 0);
+    if (k % 3 == 1) pose.translation().x() = k % 2 ? std::nan("") : INFINITY;
+    scene.add(ShapeSpec::box(0.1, 0.1, 0.1, k == 0 ? kRed : kBlue), pose);
+  }
+  Renderer renderer(squareCamera());
+  std::vector<std::uint8_t> image;
+  renderer.render(scene, Eigen::Isometry3d::Identity(), image);
+  EXPECT_EQ(renderer.lastStats().shapes_drawn, 40u - 13u);
+  // The nearest box (red, 2 m ahead: its front face at 1.95 m) covers the centre pixel.
+  EXPECT_EQ(pixel(image, 640, 320, 240), (Rgb{255, 0, 0}));
+  EXPECT_NEAR(renderer.depthAt(320, 240), 1.95, 1e-4);
+}
