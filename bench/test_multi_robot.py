@@ -49,3 +49,22 @@ def test_a_camera_topic_that_never_came_fails():
     rates["/camera/points"] = 0.0
     with pytest.raises(scenario.SanityError, match="/camera/points came at 0.0 Hz"):
         multi_robot.check_rates(listener_output(rates), 1, True)
+
+
+# The simulator's log lines, as the nodelet in the listener's process writes them to the
+# same output.
+SIMULATOR_LOG = ("\x1b[0m[ INFO] [1795624053.366758144]: sim time 0.000 s, real-time factor "
+                 "0.00, turtlebot3_burger at x 0.000 y 0.000 yaw 1.567\x1b[0m")
+
+
+def test_the_simulators_log_lines_are_not_the_listeners_figures():
+    assert not multi_robot.FIGURES_END.search("subscribed\n" + SIMULATOR_LOG + "\n")
+    assert not multi_robot.SUBSCRIBED.search(SIMULATOR_LOG + "\n")
+
+
+def test_the_listeners_last_line_is_found_among_the_simulators_log_lines():
+    output = "\n".join(["subscribed", SIMULATOR_LOG, listener_output(all_topics(1)),
+                        SIMULATOR_LOG]) + "\n"
+    assert multi_robot.SUBSCRIBED.search(output)
+    assert multi_robot.FIGURES_END.findall(output) == ["real-time factor 10.0"]
+    assert multi_robot.check_rates(output, 1, False) == 1.0
