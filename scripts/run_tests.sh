@@ -25,6 +25,10 @@ timeout --kill-after=30 4800 xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tc
   -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" run_tests -j1 > build/test.log 2>&1
 run_status=$?
 (( run_status == 0 )) || echo "catkin_make run_tests exited $run_status (see build/test.log)"
+# The benchmark scripts' own checks (rates, sanity of the peers, their output parsing); no
+# simulator is started. A failure shows in the summary through the result file.
+/usr/bin/python3 -m pytest -q -p no:cacheprovider bench/ \
+  --junitxml=build/test_results/bench/pytest-bench.xml > build/test_bench.log 2>&1
 /usr/bin/python3 scripts/test_summary.py build/test_results
 summary_status=$?
 (( run_status == 0 && summary_status == 0 ))
