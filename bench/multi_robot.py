@@ -170,18 +170,21 @@ def main():
                                check=True)
             output = open(os.path.join(work, "rates.txt"), "w+")
             listening = procs.start([listener, "--simulator"] + listen[1:], env, stdout=output)
+
+            def printed(line):  # true once the listener printed `line` (or exited)
+                return lambda: (listening.poll() is not None
+                                or line.search(open(output.name).read()))
+
             # Spawning while it subscribes would let roscpp link some subscriptions twice.
-            ros_bench.wait_for(lambda: listening.poll() is not None
-                               or SUBSCRIBED.search(open(output.name).read()),
-                               "bench_rate_listener's subscriptions", timeout_s=120, poll_s=0.05)
+            ros_bench.wait_for(printed(SUBSCRIBED), "bench_rate_listener's subscriptions",
+                               timeout_s=120, poll_s=0.05)
             spawn_others(env, urdf_file, poses)
             unpause()
             # It prints its figures and keeps the simulator running for check_driving.
             # (the simulator's own log lines, in the same output, speak of its real-time
             # factor too: the listener's figures end with a line of its own)
-            ros_bench.wait_for(lambda: listening.poll() is not None
-                               or FIGURES_END.search(open(output.name).read()),
-                               "bench_rate_listener's figures", timeout_s=900, poll_s=0.2)
+            ros_bench.wait_for(printed(FIGURES_END), "bench_rate_listener's figures",
+                               timeout_s=900, poll_s=0.2)
             result = subprocess.CompletedProcess(listening.args, listening.poll() or 0,
                                                  open(output.name).read())
         else:
