@@ -74,10 +74,10 @@ void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_n
       ROS_ERROR("robot %s: %s: not published", robot.c_str(), error.what());
       continue;
     }
-    topics.back().image = nh.advertise<sensor_msgs::Image>(
-        cameraTopic(camera.camera_name, camera.image_topic), kImageQueueSize);
-    topics.back().info = nh.advertise<sensor_msgs::CameraInfo>(
-        cameraTopic(camera.camera_name, camera.info_topic), kInfoQueueSize);
+    topics.back().image = CountedPublisher::advertise<sensor_msgs::Image>(
+        nh, cameraTopic(camera.camera_name, camera.image_topic), kImageQueueSize);
+    topics.back().info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(
+        nh, cameraTopic(camera.camera_name, camera.info_topic), kInfoQueueSize);
     if (camera.depth) {
       depth_.addCamera(robot, topics.size() - 1, camera, nh, topics.back().frame_id);
     }
@@ -93,15 +93,15 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
   const auto robot = cameras_.find(due.robot);
   if (robot == cameras_.end() || due.index >= robot->second.size()) return;
   Topics& topics = robot->second[due.index];
-  const bool image_wanted = topics.image && topics.image.getNumSubscribers() > 0;
-  const bool info_wanted = topics.info && topics.info.getNumSubscribers() > 0;
+  const bool image_wanted = topics.image.hasSubscribers();
+  const bool info_wanted = topics.info.hasSubscribers();
   const bool depth_wanted = depth_.depthWanted(due.robot, due.index);
   if (!image_wanted && !info_wanted && !depth_wanted && !depth_.infoWanted(due.robot, due.index)) {
     return;
   }
   const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
   if (info_wanted) {
-    queue_.publish(topics.info,
+    queue_.publish(topics.info.publisher(),
                    toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
   }
   depth_.publishInfo(due.robot, due.index, camera, sim_.timeS());
@@ -115,7 +115,7 @@ void CameraIo::publish(const bullet_sim::DueSensor& due) {
     if (!image_wanted) return;
     sensor_msgs::ImagePtr image = toMsg(&frame);
     image->header.frame_id = topics.frame_id;
-    queue_.publish(topics.image, std::move(image));
+    queue_.publish(topics.image.publisher(), std::move(image));
   } catch (const std::exception& error) {
     ROS_ERROR_THROTTLE(5.0, "robot %s: camera '%s' not rendered: %s", due.robot.c_str(),
                        camera.name.c_str(), error.what());

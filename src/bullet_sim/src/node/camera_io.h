@@ -4,6 +4,7 @@
 #include <bullet_sim/camera_renderer.h>
 #include <bullet_sim/simulation.h>
 
+#include "counted_publisher.h"
 #include "depth_camera_io.h"
 #include "publish_queue.h"
 
@@ -49,7 +50,7 @@ class CameraIo {
 
  private:
   struct Topics {
-    ros::Publisher image, info;
+    CountedPublisher image, info;
     std::string frame_id;
   };
 

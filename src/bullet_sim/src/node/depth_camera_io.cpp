@@ -67,12 +67,12 @@ void DepthCameraIo::addCamera(const std::string& robot, size_t index,
   const bullet_sim::DepthSpec& spec = *camera.depth;
   Topics& topics = cameras_[{robot, index}];
   topics.frame_id = frame_id;
-  topics.depth = robot_nh.advertise<sensor_msgs::Image>(
-      cameraTopic(camera.camera_name, spec.depth_image_topic), kDepthQueueSize);
-  topics.info = robot_nh.advertise<sensor_msgs::CameraInfo>(
-      cameraTopic(camera.camera_name, spec.depth_info_topic), kInfoQueueSize);
-  topics.points = robot_nh.advertise<sensor_msgs::PointCloud2>(
-      cameraTopic(camera.camera_name, spec.point_cloud_topic), kCloudQueueSize);
+  topics.depth = CountedPublisher::advertise<sensor_msgs::Image>(
+      robot_nh, cameraTopic(camera.camera_name, spec.depth_image_topic), kDepthQueueSize);
+  topics.info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(
+      robot_nh, cameraTopic(camera.camera_name, spec.depth_info_topic), kInfoQueueSize);
+  topics.points = CountedPublisher::advertise<sensor_msgs::PointCloud2>(
+      robot_nh, cameraTopic(camera.camera_name, spec.point_cloud_topic), kCloudQueueSize);
 }
 
 void DepthCameraIo::removeRobot(const std::string& robot) {
@@ -90,19 +90,20 @@ const DepthCameraIo::Topics* DepthCameraIo::find(const std::string& robot, size_
 bool DepthCameraIo::depthWanted(const std::string& robot, size_t index) const {
   const Topics* topics = find(robot, index);
   return topics &&
-         (topics->depth.getNumSubscribers() > 0 || topics->points.getNumSubscribers() > 0);
+         (topics->depth.hasSubscribers() || topics->points.hasSubscribers());
 }
 
 bool DepthCameraIo::infoWanted(const std::string& robot, size_t index) const {
   const Topics* topics = find(robot, index);
-  return topics && topics->info.getNumSubscribers() > 0;
+  return topics && topics->info.hasSubscribers();
 }
 
 void DepthCameraIo::publishInfo(const std::string& robot, size_t index,
                                 const bullet_sim::CameraSpec& camera, double time_s) {
   if (!infoWanted(robot, index)) return;
   const Topics& topics = *find(robot, index);
-  queue_.publish(topics.info, toMsg(bullet_sim::cameraInfo(camera, time_s), topics.frame_id));
+  queue_.publish(topics.info.publisher(),
+                 toMsg(bullet_sim::cameraInfo(camera, time_s), topics.frame_id));
 }
 
 void DepthCameraIo::publish(const std::string& robot, size_t index,
@@ -110,17 +111,17 @@ void DepthCameraIo::publish(const std::string& robot, size_t index,
                             bullet_sim::DepthImageData* depth, const bullet_sim::ImageData& image) {
   const Topics* topics = find(robot, index);
   if (!topics) return;
-  if (topics->points.getNumSubscribers() > 0) {
+  if (topics->points.hasSubscribers()) {
     bullet_sim::PointCloudData cloud;
     bullet_sim::makePointCloud(camera, *depth, image, &cloud);
     sensor_msgs::PointCloud2Ptr msg = toMsg(&cloud);
     msg->header.frame_id = topics->frame_id;
-    queue_.publish(topics->points, std::move(msg));
+    queue_.publish(topics->points.publisher(), std::move(msg));
   }
-  if (topics->depth.getNumSubscribers() > 0) {
+  if (topics->depth.hasSubscribers()) {
     sensor_msgs::ImagePtr msg = toMsg(depth);
     msg->header.frame_id = topics->frame_id;
-    queue_.publish(topics->depth, std::move(msg));
+    queue_.publish(topics->depth.publisher(), std::move(msg));
   }
 }
 

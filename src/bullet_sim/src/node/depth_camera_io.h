@@ -5,6 +5,7 @@
 #include <bullet_sim/depth_camera.h>
 
 #include <ros/node_handle.h>
+#include "counted_publisher.h"
 #include "publish_queue.h"
 
 #include <ros/publisher.h>
@@ -47,7 +48,7 @@ class DepthCameraIo {
 
  private:
   struct Topics {
-    ros::Publisher depth, info, points;
+    CountedPublisher depth, info, points;
     std::string frame_id;
   };
   const Topics* find(const std::string& robot, size_t index) const;

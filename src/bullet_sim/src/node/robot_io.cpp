@@ -44,12 +44,15 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
   ros::NodeHandle nh(robot_nh);
   const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
   for (const bullet_sim::RaySpec& ray : spec.rays)
-    scan_pubs_.push_back(nh.advertise<sensor_msgs::LaserScan>(ray.topic, kQueueSize));
+    scan_pubs_.push_back(
+        CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, ray.topic, kQueueSize));
   for (const bullet_sim::ImuSpec& imu : spec.imus)
-    imu_pubs_.push_back(nh.advertise<sensor_msgs::Imu>(imu.topic, kQueueSize));
-  joint_state_pub_ = nh.advertise<sensor_msgs::JointState>("joint_states", kQueueSize);
+    imu_pubs_.push_back(CountedPublisher::advertise<sensor_msgs::Imu>(nh, imu.topic, kQueueSize));
+  joint_state_pub_ =
+      CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
   if (spec.diff_drive) {
-    odom_pub_ = nh.advertise<nav_msgs::Odometry>(spec.diff_drive->odometry_topic, kQueueSize);
+    odom_pub_ = CountedPublisher::advertise<nav_msgs::Odometry>(
+        nh, spec.diff_drive->odometry_topic, kQueueSize);
     publish_odom_tf_ = spec.diff_drive->publish_odom_tf;
     if (publish_odom_tf_) tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", kTfQueueSize);
     cmd_vel_sub_ = nh.subscribe(spec.diff_drive->command_topic, 1, &RobotIo::onCmdVel, this,
@@ -60,25 +63,25 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
 void RobotIo::publish(const bullet_sim::DueSensor& due) {
   switch (due.kind) {
     case bullet_sim::SensorKind::Ray:
-      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].getNumSubscribers() > 0) {
+      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].hasSubscribers()) {
         sensor_msgs::LaserScan scan = toMsg(sim_.readRay(robot_, due.index));
         scan.header.frame_id = resolveFrame(tf_prefix_, scan.header.frame_id);
-        queue_.publish(scan_pubs_[due.index], std::move(scan));
+        queue_.publish(scan_pubs_[due.index].publisher(), std::move(scan));
       }
       break;
     case bullet_sim::SensorKind::Imu:
-      if (due.index < imu_pubs_.size() && imu_pubs_[due.index].getNumSubscribers() > 0) {
+      if (due.index < imu_pubs_.size() && imu_pubs_[due.index].hasSubscribers()) {
         sensor_msgs::Imu imu = toMsg(sim_.readImu(robot_, due.index));
         imu.header.frame_id = resolveFrame(tf_prefix_, imu.header.frame_id);
-        queue_.publish(imu_pubs_[due.index], std::move(imu));
+        queue_.publish(imu_pubs_[due.index].publisher(), std::move(imu));
       }
       break;
     case bullet_sim::SensorKind::Odometry:
       publishOdometry();
       break;
     case bullet_sim::SensorKind::JointStates:
-      if (joint_state_pub_.getNumSubscribers() > 0)
-        queue_.publish(joint_state_pub_, toMsg(sim_.readJointStates(robot_)));
+      if (joint_state_pub_.hasSubscribers())
+        queue_.publish(joint_state_pub_.publisher(), toMsg(sim_.readJointStates(robot_)));
       break;
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
@@ -86,7 +89,7 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
 }
 
 void RobotIo::publishOdometry() {
-  const bool odom_wanted = odom_pub_ && odom_pub_.getNumSubscribers() > 0;
+  const bool odom_wanted = odom_pub_.hasSubscribers();
   if (!odom_wanted && !publish_odom_tf_) return;
   bullet_sim::OdometryData odom = sim_.readOdometry(robot_);
   odom.frame_id = resolveFrame(tf_prefix_, odom.frame_id);
@@ -96,7 +99,7 @@ void RobotIo::publishOdometry() {
     tf.transforms.push_back(toTransformMsg(odom));
     queue_.publish(tf_pub_, std::move(tf));
   }
-  if (odom_wanted) queue_.publish(odom_pub_, toMsg(odom));
+  if (odom_wanted) queue_.publish(odom_pub_.publisher(), toMsg(odom));
 }
 
 void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {

@@ -3,6 +3,7 @@
 
 #include <bullet_sim/simulation.h>
 
+#include "counted_publisher.h"
 #include "publish_queue.h"
 
 #include <geometry_msgs/Twist.h>
@@ -38,10 +39,10 @@ class RobotIo {
   PublishQueue& queue_;
   const std::string robot_;
   const std::string tf_prefix_;
-  std::vector<ros::Publisher> scan_pubs_;  ///< one per RaySpec, same index
-  std::vector<ros::Publisher> imu_pubs_;   ///< one per ImuSpec, same index
-  ros::Publisher odom_pub_;
-  ros::Publisher joint_state_pub_;
+  std::vector<CountedPublisher> scan_pubs_;  ///< one per RaySpec, same index
+  std::vector<CountedPublisher> imu_pubs_;   ///< one per ImuSpec, same index
+  CountedPublisher odom_pub_;
+  CountedPublisher joint_state_pub_;
   ros::Subscriber cmd_vel_sub_;
   ros::Publisher tf_pub_;  ///< /tf, for the odom transform
   bool publish_odom_tf_ = false;

@@ -21,8 +21,10 @@ StateTopics::StateTopics(const bullet_sim::Simulation& sim, PublishQueue& queue,
                          const ros::NodeHandle& gazebo_nh, double rate_hz)
     : sim_(sim), queue_(queue), period_s_(1.0 / rate_hz) {
   ros::NodeHandle nh(gazebo_nh);
-  model_states_pub_ = nh.advertise<gazebo_msgs::ModelStates>("model_states", kQueueSize);
-  link_states_pub_ = nh.advertise<gazebo_msgs::LinkStates>("link_states", kQueueSize);
+  model_states_pub_ =
+      CountedPublisher::advertise<gazebo_msgs::ModelStates>(nh, "model_states", kQueueSize);
+  link_states_pub_ =
+      CountedPublisher::advertise<gazebo_msgs::LinkStates>(nh, "link_states", kQueueSize);
 }
 
 void StateTopics::update() {
@@ -32,8 +34,8 @@ void StateTopics::update() {
   const bool went_back = tick < last_tick_;
   last_tick_ = tick;
   if (went_back) return;
-  if (model_states_pub_.getNumSubscribers() > 0) publishModelStates();
-  if (link_states_pub_.getNumSubscribers() > 0) publishLinkStates();
+  if (model_states_pub_.hasSubscribers()) publishModelStates();
+  if (link_states_pub_.hasSubscribers()) publishLinkStates();
 }
 
 void StateTopics::publishModelStates() const {
@@ -49,7 +51,7 @@ void StateTopics::publishModelStates() const {
     msg.pose.push_back(toMsg(model.pose));
     msg.twist.push_back(toMsg(bullet_sim::Twist3{}));
   }
-  queue_.publish(model_states_pub_, std::move(msg));
+  queue_.publish(model_states_pub_.publisher(), std::move(msg));
 }
 
 void StateTopics::publishLinkStates() const {
@@ -62,7 +64,7 @@ void StateTopics::publishLinkStates() const {
       msg.twist.push_back(toMsg(state.twist));
     }
   }
-  queue_.publish(link_states_pub_, std::move(msg));
+  queue_.publish(link_states_pub_.publisher(), std::move(msg));
 }
 
 }  // namespace bullet_sim_node

@@ -3,6 +3,7 @@
 
 #include <bullet_sim/simulation.h>
 
+#include "counted_publisher.h"
 #include "publish_queue.h"
 
 #include <ros/node_handle.h>
@@ -29,7 +30,7 @@ class StateTopics {
 
   const bullet_sim::Simulation& sim_;
   PublishQueue& queue_;
-  ros::Publisher model_states_pub_, link_states_pub_;
+  CountedPublisher model_states_pub_, link_states_pub_;
   const double period_s_;
   long last_tick_ = 0;  ///< periods elapsed at the last message
 };

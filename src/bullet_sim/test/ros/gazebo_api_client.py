@@ -3,7 +3,9 @@ pose helpers."""
 import math
 import threading
 import time
+import xmlrpc.client
 
+import rosgraph
 import rospy
 from bullet_sim.srv import StepSimulation
 from gazebo_msgs import srv as gz
@@ -109,6 +111,15 @@ class Latest:
     def last(self):
         with self.lock:
             return self.messages[-1] if self.messages else None
+
+
+def simulator_connections(topic, caller_id):
+    """The subscribers the simulator's (/bullet_sim) publisher of `topic` is connected to,
+    from its own bus information."""
+    master = rosgraph.Master(caller_id)
+    node = xmlrpc.client.ServerProxy(master.lookupNode("/bullet_sim"))
+    _, _, bus = node.getBusInfo(caller_id)
+    return [c for c in bus if c[4] == topic and c[2] == "o"]
 
 
 def wait_for(predicate, what, timeout_s=30):

@@ -7,14 +7,12 @@ would show a frame made for nobody)."""
 import math
 import struct
 import unittest
-import xmlrpc.client
 
-import rosgraph
 import rospy
 import rostest
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2
 
-from gazebo_api_client import Latest, connect, wait_for, yaw_pose
+from gazebo_api_client import Latest, connect, simulator_connections, wait_for, yaw_pose
 
 NS = "/kinect_ns/kinect/"
 TOPICS = {"rgb/image_raw": Image, "rgb/camera_info": CameraInfo,
@@ -34,11 +32,7 @@ PANEL_URDF = """<robot name="panel"><link name="panel">
 
 
 def node_connections(topic):
-    """Subscribers the simulator's publisher of `topic` is connected to."""
-    master = rosgraph.Master("/depth_camera_test")
-    node = xmlrpc.client.ServerProxy(master.lookupNode("/bullet_sim"))
-    _, _, bus = node.getBusInfo("/depth_camera_test")
-    return [c for c in bus if c[4] == topic and c[2] == "o"]
+    return simulator_connections(topic, "/depth_camera_test")
 
 
 class DepthCamera(unittest.TestCase):

@@ -10,10 +10,11 @@ import rospy
 import rostest
 from gazebo_msgs.msg import LinkState, LinkStates, ModelState, ModelStates, ODEPhysics
 from geometry_msgs.msg import Point, Pose, Twist, Vector3, Wrench
+from sensor_msgs.msg import Imu
 
 from gazebo_api_client import (BOX_MASS_KG, BOX_URDF, ROTOR_URDF, SDF_BOX, SDF_STATIC_BOX,
-                               Latest, connect,
-                               rotate, wait_for, yaw_of, yaw_pose)
+                               Latest, connect, rotate, simulator_connections,
+                               wait_for, yaw_of, yaw_pose)
 
 ROBOT = "burger"
 SPAWN_X, SPAWN_Y = 0.5, -0.25
@@ -327,6 +328,36 @@ class GazeboApi(unittest.TestCase):
         self.ok("step_simulation", 10)
         wait_for(lambda: models.count() >= 101, "the message at 1.01 s")
         self.assertEqual(models.count(), 101)
+
+    def test_imu_is_read_only_while_subscribed(self):
+        """The Burger's IMU (200 Hz: a reading every 5 steps) is read and published while
+        someone subscribes, and not while nobody does. roscpp numbers every publish() in
+        header.seq, so the first reading after an unwatched stretch follows the last one
+        before it in seq, while its stamp is the stretch later."""
+        def watch(steps):
+            imu = Latest("/imu", Imu)
+            imu.wait_connected()
+            wait_for(lambda: simulator_connections("/imu", "/gazebo_api_test"),
+                     "the simulator to see the /imu subscriber")
+            self.ok("step_simulation", steps)
+            wait_for(lambda: imu.count() >= steps // 5, "%d IMU readings" % (steps // 5))
+            imu.sub.unregister()
+            wait_for(lambda: not simulator_connections("/imu", "/gazebo_api_test"),
+                     "the simulator to drop the /imu subscriber")
+            return imu.messages
+
+        before = watch(50)
+        self.ok("step_simulation", 100)  # 20 readings fall due unwatched
+        after = watch(50)
+        self.assertEqual((len(before), len(after)), (10, 10))
+        for messages in (before, after):
+            for a, b in zip(messages, messages[1:]):
+                self.assertEqual(b.header.seq, a.header.seq + 1)
+                self.assertAlmostEqual((b.header.stamp - a.header.stamp).to_sec(), 0.005,
+                                       places=9)
+        self.assertEqual(after[0].header.seq, before[-1].header.seq + 1)
+        self.assertAlmostEqual((after[0].header.stamp - before[-1].header.stamp).to_sec(),
+                               0.105, places=9)
 
 
 if __name__ == "__main__":
