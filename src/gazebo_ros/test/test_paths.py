@@ -14,8 +14,9 @@ class TestPaths(unittest.TestCase):
         self.tmp = tempfile.mkdtemp()
         # A stand-in for rospack that answers `rospack plugins --attrib=A gazebo_ros`.
         self.rospack = os.path.join(self.tmp, 'rospack')
+        self.rospack_log = os.path.join(self.tmp, 'rospack.log')
         with open(self.rospack, 'w') as script:
-            script.write('#!/bin/sh\ncase "$2" in\n'
+            script.write('#!/bin/sh\necho "$@" >> %s\ncase "$2" in\n' % self.rospack_log +
                          '  --attrib=gazebo_model_path) echo "pkg_a /a/models:/a/more";'
                          ' echo "pkg_b /b/models";;\n'
                          '  --attrib=gazebo_media_path) echo "pkg_a /a/media";;\n'
@@ -73,6 +74,32 @@ class TestPaths(unittest.TestCase):
         with self.assertRaisesRegex(paths.WorldNotFound,
                                     r'world "worlds/moon.world" not found: .*\(/nowhere, '):
             paths.resolve_world('worlds/moon.world', env, cwd='/')
+
+    def rospack_calls(self):
+        if not os.path.exists(self.rospack_log):
+            return []
+        with open(self.rospack_log) as log:
+            return log.read().splitlines()
+
+    def test_a_world_file_starts_the_simulator_without_crawling_the_packages(self):
+        world = os.path.join(self.tmp, 'track.world')
+        open(world, 'w').close()
+        given = {'GAZEBO_MODEL_PATH': '/mine'}
+        for name, cwd in ((world, '/'), ('track.world', self.tmp)):
+            env, path = paths.server_environment(name, given, cwd=cwd, rospack=(self.rospack,))
+            self.assertEqual((env, path), (given, world))
+        self.assertEqual(self.rospack_calls(), [])
+
+    def test_a_world_name_is_looked_up_with_the_exports(self):
+        os.makedirs(os.path.join(self.tmp, 'media', 'worlds'))
+        world = os.path.join(self.tmp, 'media', 'worlds', 'empty.world')
+        open(world, 'w').close()
+        env, path = paths.server_environment(
+            'worlds/empty.world', {'GAZEBO_RESOURCE_PATH': os.path.join(self.tmp, 'media')},
+            cwd='/', rospack=(self.rospack,))
+        self.assertEqual(path, world)
+        self.assertEqual(env['GAZEBO_MODEL_PATH'], '/a/models:/a/more:/b/models')
+        self.assertIn('plugins --attrib=gazebo_media_path gazebo_ros', self.rospack_calls())
 
 
 class TestServerArgs(unittest.TestCase):

@@ -1,6 +1,7 @@
 #ifndef BULLET_SIM_RESOURCE_PATHS_H
 #define BULLET_SIM_RESOURCE_PATHS_H
 
+#include <future>
 #include <map>
 #include <string>
 #include <vector>
@@ -13,10 +14,17 @@ namespace bullet_sim {
 struct ResourcePaths {
   std::vector<std::string> model_paths;
   std::vector<std::string> package_paths;
+  /// Model folders searched after `model_paths` that may still be being collected (the
+  /// ROS packages' exports, which take a crawl of the package path): waited for only
+  /// when a model is not in `model_paths`. Not valid: none.
+  std::shared_future<std::vector<std::string>> later_model_paths{};
 
   /// GAZEBO_MODEL_PATH and ROS_PACKAGE_PATH of the process environment (':'-separated;
-  /// empty entries are skipped).
+  /// empty entries are skipped), then the process's exported model paths, if set.
   static ResourcePaths fromEnvironment();
+  /// Has every later fromEnvironment() search `paths` after GAZEBO_MODEL_PATH, as
+  /// gazebo_ros adds the packages' `gazebo_model_path` exports to Gazebo's model path.
+  static void setExportedModelPaths(std::shared_future<std::vector<std::string>> paths);
 };
 
 /// Resolves resource URIs to existing files, remembering where each package lives.
@@ -40,6 +48,12 @@ class UriResolver {
   const ResourcePaths& paths() const { return paths_; }
 
  private:
+  /// `root/relative` for the first model root (model_paths, then later_model_paths)
+  /// where `is_wanted` holds for it, or "".
+  template <class IsWanted>
+  std::string findInModelRoots(const std::string& relative, IsWanted is_wanted,
+                               std::vector<std::string>* searched) const;
+
   ResourcePaths paths_;
   mutable bool packages_crawled_ = false;
   mutable std::map<std::string, std::string> package_dirs_;  ///< name -> folder

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <regex>
 #include <sstream>
 
@@ -61,13 +62,23 @@ bool startsWith(const std::string& s, const std::string& prefix) {
   return s.compare(0, prefix.size(), prefix) == 0;
 }
 
+std::mutex exported_mutex;
+std::shared_future<std::vector<std::string>> exported_model_paths;
+
 }  // namespace
 
 ResourcePaths ResourcePaths::fromEnvironment() {
   ResourcePaths paths;
   paths.model_paths = splitPathList(std::getenv("GAZEBO_MODEL_PATH"));
   paths.package_paths = splitPathList(std::getenv("ROS_PACKAGE_PATH"));
+  std::lock_guard<std::mutex> lock(exported_mutex);
+  paths.later_model_paths = exported_model_paths;
   return paths;
+}
+
+void ResourcePaths::setExportedModelPaths(std::shared_future<std::vector<std::string>> paths) {
+  std::lock_guard<std::mutex> lock(exported_mutex);
+  exported_model_paths = std::move(paths);
 }
 
 UriResolver::UriResolver(ResourcePaths paths) : paths_(std::move(paths)) {}
@@ -81,26 +92,45 @@ std::string UriResolver::findPackage(const std::string& name) const {
   return it == package_dirs_.end() ? "" : it->second;
 }
 
+template <class IsWanted>
+std::string UriResolver::findInModelRoots(const std::string& relative, IsWanted is_wanted,
+                                          std::vector<std::string>* searched) const {
+  const auto search = [&](const std::vector<std::string>& roots) -> std::string {
+    for (const std::string& root : roots) {
+      if (searched) searched->push_back(root);
+      const fs::path candidate = fs::path(root) / relative;
+      if (is_wanted(candidate)) return candidate.string();
+    }
+    return "";
+  };
+  std::string found = search(paths_.model_paths);
+  if (found.empty() && paths_.later_model_paths.valid()) {
+    std::vector<std::string> later;
+    for (const std::string& root : paths_.later_model_paths.get()) {
+      if (std::find(paths_.model_paths.begin(), paths_.model_paths.end(), root) ==
+          paths_.model_paths.end()) {
+        later.push_back(root);
+      }
+    }
+    found = search(later);
+  }
+  return found;
+}
+
 std::string UriResolver::findModel(const std::string& name,
                                    std::vector<std::string>* searched) const {
-  for (const std::string& root : paths_.model_paths) {
-    if (searched) searched->push_back(root);
-    std::error_code ec;
-    if (fs::is_directory(fs::path(root) / name, ec)) return (fs::path(root) / name).string();
-  }
-  return "";
+  return findInModelRoots(
+      name,
+      [](const fs::path& path) {
+        std::error_code ec;
+        return fs::is_directory(path, ec);
+      },
+      searched);
 }
 
 std::string UriResolver::resolve(const std::string& uri, const std::string& base_dir,
                                  std::vector<std::string>* searched) const {
-  if (startsWith(uri, "model://")) {
-    const std::string rest = uri.substr(8);
-    for (const std::string& root : paths_.model_paths) {
-      if (searched) searched->push_back(root);
-      if (isFile(fs::path(root) / rest)) return (fs::path(root) / rest).string();
-    }
-    return "";
-  }
+  if (startsWith(uri, "model://")) return findInModelRoots(uri.substr(8), isFile, searched);
   if (startsWith(uri, "package://")) {
     const std::string rest = uri.substr(10);
     const std::string package = rest.substr(0, rest.find('/'));

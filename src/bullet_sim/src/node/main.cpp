@@ -3,6 +3,7 @@
 // is spawned from robot_description at start only when ~robot_name is set; others arrive
 // through /gazebo/spawn_urdf_model. The bullet_sim/Simulator nodelet runs the same.
 #include "config.h"
+#include "gazebo_paths.h"
 #include "simulator_node.h"
 
 #include <bullet_sim/errors.h>
@@ -11,6 +12,7 @@
 #include <ros/ros.h>
 
 int main(int argc, char** argv) {
+  bullet_sim_node::collectExportedModelPaths();
   ros::init(argc, argv, "bullet_sim");
   ros::NodeHandle nh;
   try {

@@ -2,6 +2,7 @@
 // manager receive its messages as the shared pointers it publishes: no serialisation, no
 // copy, no socket (point clouds and images above all).
 #include "config.h"
+#include "gazebo_paths.h"
 #include "simulator_node.h"
 
 #include <nodelet/nodelet.h>
@@ -28,6 +29,7 @@ class SimulatorNodelet : public nodelet::Nodelet {
 
  private:
   void onInit() override {
+    collectExportedModelPaths();
     ros::NodeHandle nh = getNodeHandle();
     ros::NodeHandle private_nh = getPrivateNodeHandle();
     nh.setCallbackQueue(&callbacks_);

@@ -1,6 +1,7 @@
 // UriResolver tests: model://, package://, file://, absolute and relative URIs against
 // folders the tests build in a temp dir.
 #include <cstdlib>
+#include <future>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,56 @@ TEST(UriResolver, ModelUrisSearchTheModelFoldersInOrder) {
   searched.clear();
   EXPECT_EQ(resolver.resolve("model://chair/model.config", "", &searched), "");
   EXPECT_EQ(searched.size(), 2u);
+}
+
+/// Later model paths that record whether anyone asked for them (a deferred future runs
+/// its function in the first get()).
+std::shared_future<std::vector<std::string>> laterPaths(std::vector<std::string> paths,
+                                                        bool* asked) {
+  return std::async(std::launch::deferred, [paths, asked] {
+           *asked = true;
+           return paths;
+         })
+      .share();
+}
+
+TEST(UriResolver, LaterModelPathsAreWaitedForOnlyWhenTheFirstOnesFail) {
+  TempDir dir;
+  dir.write("env/table/model.config", "<model/>");
+  dir.write("exported/table/model.config", "<model/>");
+  dir.write("exported/lamp/meshes/lamp.stl", "solid");
+  bool asked = false;
+  ResourcePaths paths{{dir.sub("env")}, {}};
+  // An exported folder that the environment already lists is not searched twice.
+  paths.later_model_paths = laterPaths({dir.sub("env"), dir.sub("exported")}, &asked);
+  const UriResolver resolver(paths);
+
+  EXPECT_EQ(resolver.findModel("table"), dir.sub("env/table"));
+  EXPECT_EQ(resolver.resolve("model://table/model.config", ""), dir.sub("env/table/model.config"));
+  EXPECT_FALSE(asked);
+
+  EXPECT_EQ(resolver.resolve("model://lamp/meshes/lamp.stl", ""),
+            dir.sub("exported/lamp/meshes/lamp.stl"));
+  EXPECT_TRUE(asked);
+  EXPECT_EQ(resolver.findModel("lamp"), dir.sub("exported/lamp"));
+  std::vector<std::string> searched;
+  EXPECT_EQ(resolver.findModel("chair", &searched), "");
+  EXPECT_EQ(searched, (std::vector<std::string>{dir.sub("env"), dir.sub("exported")}));
+}
+
+TEST(ResourcePaths, FromEnvironmentSearchesTheExportedModelPathsLast) {
+  TempDir dir;
+  dir.write("exported/lamp/model.config", "<model/>");
+  bool asked = false;
+  ResourcePaths::setExportedModelPaths(laterPaths({dir.sub("exported")}, &asked));
+  setenv("GAZEBO_MODEL_PATH", "/nowhere", 1);
+  const UriResolver resolver(ResourcePaths::fromEnvironment());
+  std::vector<std::string> searched;
+  EXPECT_EQ(resolver.findModel("lamp", &searched), dir.sub("exported/lamp"));
+  EXPECT_EQ(searched, (std::vector<std::string>{"/nowhere", dir.sub("exported")}));
+  ResourcePaths::setExportedModelPaths({});
+  unsetenv("GAZEBO_MODEL_PATH");
+  EXPECT_FALSE(ResourcePaths::fromEnvironment().later_model_paths.valid());
 }
 
 TEST(UriResolver, PackageUrisFindPackagesAsRospackCrawls) {

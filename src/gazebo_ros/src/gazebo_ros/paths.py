@@ -91,6 +91,20 @@ class WorldNotFound(Exception):
     pass
 
 
+def server_environment(world, env, cwd=None, rospack=('rospack',)):
+    """The environment gzserver starts the simulator in, and the world file it loads. A
+    world given as a file needs no lookup, and the environment stays as it is: the
+    simulator collects the packages' exported model folders itself while it loads the
+    world. A world given by name is looked up in GAZEBO_RESOURCE_PATH with the exports
+    added (`rospack plugins`, a crawl of the package path each)."""
+    cwd = cwd or os.getcwd()
+    candidate = world if os.path.isabs(world) else os.path.join(cwd, world)
+    if os.path.isfile(candidate):
+        return dict(env), os.path.abspath(candidate)
+    env = gazebo_environment(env, rospack=rospack)
+    return env, resolve_world(world, env, cwd)
+
+
 def resolve_world(name, env, cwd=None):
     """The file a world argument names: an existing path (absolute or relative to
     `cwd`), else a name looked up in every GAZEBO_RESOURCE_PATH folder, as gzserver does.
