@@ -95,26 +95,19 @@ std::string UriResolver::findPackage(const std::string& name) const {
 template <class IsWanted>
 std::string UriResolver::findInModelRoots(const std::string& relative, IsWanted is_wanted,
                                           std::vector<std::string>* searched) const {
-  const auto search = [&](const std::vector<std::string>& roots) -> std::string {
-    for (const std::string& root : roots) {
-      if (searched) searched->push_back(root);
-      const fs::path candidate = fs::path(root) / relative;
-      if (is_wanted(candidate)) return candidate.string();
-    }
-    return "";
+  const auto found_in = [&](const std::string& root) {
+    if (searched) searched->push_back(root);
+    return is_wanted(fs::path(root) / relative);
   };
-  std::string found = search(paths_.model_paths);
-  if (found.empty() && paths_.later_model_paths.valid()) {
-    std::vector<std::string> later;
-    for (const std::string& root : paths_.later_model_paths.get()) {
-      if (std::find(paths_.model_paths.begin(), paths_.model_paths.end(), root) ==
-          paths_.model_paths.end()) {
-        later.push_back(root);
-      }
-    }
-    found = search(later);
+  for (const std::string& root : paths_.model_paths)
+    if (found_in(root)) return (fs::path(root) / relative).string();
+  if (!paths_.later_model_paths.valid()) return "";
+  const std::vector<std::string>& first = paths_.model_paths;
+  for (const std::string& root : paths_.later_model_paths.get()) {
+    if (std::find(first.begin(), first.end(), root) != first.end()) continue;  // seen
+    if (found_in(root)) return (fs::path(root) / relative).string();
   }
-  return found;
+  return "";
 }
 
 std::string UriResolver::findModel(const std::string& name,

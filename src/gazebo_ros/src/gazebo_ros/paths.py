@@ -97,12 +97,11 @@ def server_environment(world, env, cwd=None, rospack=('rospack',)):
     simulator collects the packages' exported model folders itself while it loads the
     world. A world given by name is looked up in GAZEBO_RESOURCE_PATH with the exports
     added (`rospack plugins`, a crawl of the package path each)."""
-    cwd = cwd or os.getcwd()
-    candidate = world if os.path.isabs(world) else os.path.join(cwd, world)
-    if os.path.isfile(candidate):
-        return dict(env), os.path.abspath(candidate)
-    env = gazebo_environment(env, rospack=rospack)
-    return env, resolve_world(world, env, cwd)
+    try:
+        return dict(env), resolve_world(world, {}, cwd)  # a file: no folders to search
+    except WorldNotFound:
+        env = gazebo_environment(env, rospack=rospack)
+        return env, resolve_world(world, env, cwd)
 
 
 def resolve_world(name, env, cwd=None):
