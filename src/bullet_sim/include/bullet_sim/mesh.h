@@ -25,8 +25,9 @@ struct MeshPart {
   std::optional<Eigen::Vector4f> rgba;
 };
 
-/// A mesh file as Gazebo shows it: every node transform applied, COLLADA's <unit> and
-/// <up_axis> honoured (metres, Z up), triangles only (points and lines dropped).
+/// A mesh file as Gazebo shows it: every node transform applied, COLLADA's <unit> applied
+/// and its <up_axis> ignored as Gazebo Classic does (vertices as written, Z up, in metres),
+/// triangles only (points and lines dropped).
 /// Textures are not read.
 struct TriangleMesh {
   std::string path;  ///< the file it was read from

@@ -4,7 +4,6 @@
 #include <map>
 
 #include <assimp/Importer.hpp>
-#include <assimp/commonMetaData.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -23,21 +22,6 @@ Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
   out << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2,
       m.d3, m.d4;
   return out;
-}
-
-/// assimp's COLLADA importer applies <unit> and turns every file to Y up (it rotates Z_UP
-/// and X_UP data); Gazebo shows COLLADA Z up. Turning assimp's Y up to Z up (+90 degrees
-/// about x) therefore gives Gazebo's result for every <up_axis>: a Z_UP file comes out
-/// as written, a Y_UP file stood up.
-Eigen::Matrix4d importerToGazebo(const aiScene& scene) {
-  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
-  aiString format;
-  if (scene.mMetaData && scene.mMetaData->Get(AI_METADATA_SOURCE_FORMAT, format) &&
-      std::string(format.C_Str()).find("Collada") != std::string::npos) {
-    T.topLeftCorner<3, 3>() =
-        Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  }
-  return T;
 }
 
 /// The file's own diffuse colour of a material; none for assimp's stand-in material
@@ -60,7 +44,7 @@ class SceneFlattener {
   explicit SceneFlattener(const aiScene& scene) : scene_(scene) {}
 
   std::vector<MeshPart> flatten() {
-    visit(*scene_.mRootNode, importerToGazebo(scene_));
+    visit(*scene_.mRootNode, Eigen::Matrix4d::Identity());
     std::vector<MeshPart> parts;
     for (auto& [material, part] : parts_) {
       if (!part.triangles.empty()) parts.push_back(std::move(part));
@@ -139,6 +123,10 @@ size_t TriangleMesh::vertexCount() const {
 
 TriangleMesh importMeshFile(const std::string& path) {
   Assimp::Importer importer;
+  // Gazebo Classic reads COLLADA with its own loader, which applies <unit> and ignores
+  // <up_axis> (gazebo-classic issue 1305): vertices are taken as written, Z up. assimp
+  // applies <unit> too, and with this flag leaves the axes alone.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   // Only positions and materials are used: without normals and texture coordinates the

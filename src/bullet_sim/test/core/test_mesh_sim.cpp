@@ -87,10 +87,10 @@ class MeshWorld : public ::testing::Test {
 }  // namespace
 
 TEST_F(MeshWorld, MeshBurgerLidarSeesAMeshWallAndIntoAConcaveMesh) {
-  // Wall: a COLLADA box in centimetres with Y up, 10 cm thick (x), 2 m wide (world y), 1 m
-  // high; placed at x 1.5 its near face is at x 1.45.
+  // Wall: a COLLADA box in centimetres tagged Y_UP but written z up, as Gazebo reads it:
+  // 10 cm thick (x), 2 m wide (y), 1 m high; placed at x 1.5 its near face is at x 1.45.
   bullet_sim_test::writeCollada(dir_ + "/wall.dae",
-                                boxTriangles(Vector3d(10, 100, 200), Vector3d(0, 50, 0)), 0.01,
+                                boxTriangles(Vector3d(10, 200, 100), Vector3d(0, 0, 50)), 0.01,
                                 "Y_UP", Eigen::Vector4f(0.6f, 0.6f, 0.9f, 1));
   // Pocket: a U of three boxes open towards the robot (-y); its back wall's inner face is at
   // y 1.95 + 0 (model at y 0), the mouth at y 1.0. Its convex hull would close the mouth.
