@@ -20,8 +20,9 @@ MESSAGE_DEPENDS = '''
   <build_depend>message_generation</build_depend>
   <exec_depend>message_runtime</exec_depend>'''
 
-# A C++ program (target PACKAGE_report, program sensor_state_report) that includes the generated header and prints, for each type, its name,
-# md5sum and the wire size of a default message. It makes no NodeHandle: no master needed.
+# A C++ program (target PACKAGE_report, program sensor_state_report) that includes the
+# generated headers and prints, for each type, its name, md5sum and the wire size of a
+# default message. It makes no NodeHandle: no master needed.
 REPORT_CPP = r'''#include <cstdio>
 #include <ros/message_traits.h>
 #include <ros/serialization.h>
