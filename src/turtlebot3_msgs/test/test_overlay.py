@@ -22,7 +22,8 @@ sys.path.insert(0, os.path.join(HERE, 'overlay'))
 import released_types  # noqa: E402
 import user_workspace  # noqa: E402
 
-CATKIN_MAKE = 'catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release -j2'
+# Plain catkin_make, as a user types it; bash() puts /usr/bin first in PATH (see README).
+CATKIN_MAKE = 'catkin_make -j2'
 # Wire size of a default message of each type, counted by hand from the released fields:
 # SensorState = header (4 + 8 + 4) + 4 one-byte fields + 4 float32 + 2 int32;
 # VersionInfo = three empty strings (4 bytes of length each); Sound = one uint8.
