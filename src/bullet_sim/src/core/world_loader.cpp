@@ -6,6 +6,7 @@
 #include "bullet_sim/mesh.h"
 #include "bullet_sim/world_spec.h"
 #include "description_geometry.h"
+#include "visual_appearance.h"
 #include "robot_plan.h"
 #include "sdf_document.h"
 #include "sdf_model.h"
@@ -147,9 +148,12 @@ class WorldReader {
       checkGeometrySize(*vis.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
                                          "' visual '" + vis.Name() + "'");
       StaticShape s = shape(model, link, *vis.Geom(), T_world_link * toIso(poseInParent(vis)), false);
-      s.rgba = visualColour(vis, source_ + ": model '" + model + "' link '" + link.Name() +
-                                     "' visual '" + vis.Name() + "'",
-                            &spec->warnings);
+      const Appearance look = visualAppearance(
+          vis, source_ + ": model '" + model + "' link '" + link.Name() + "' visual '" +
+                   vis.Name() + "'",
+          source_, resolver_, &spec->warnings);
+      s.rgba = look.rgba;
+      s.texture = look.texture;
       mergeVisual(s, spec);
     }
   }
@@ -163,6 +167,7 @@ class WorldReader {
           (s.pose.position - visual.pose.position).norm() < 1e-9 &&
           s.pose.orientation.angularDistance(visual.pose.orientation) < 1e-9) {
         s.rgba = visual.rgba;
+        s.texture = visual.texture;
         return;
       }
     }
