@@ -140,8 +140,9 @@ class WorldReader {
       const sdf::Collision& col = *link.CollisionByIndex(c);
       checkGeometrySize(*col.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
                                          "' collision '" + col.Name() + "'");
-      spec->shapes.push_back(shape(model, link, *col.Geom(),
-                                   T_world_link * toIso(poseInParent(col)), true));
+      StaticShape s = shape(model, link, *col.Geom(), T_world_link * toIso(poseInParent(col)), true);
+      if (s.kind == Geometry::Mesh && !s.mesh) continue;  // not found: warned, left out
+      spec->shapes.push_back(std::move(s));
     }
     for (uint64_t v = 0; v < link.VisualCount(); ++v) {
       const sdf::Visual& vis = *link.VisualByIndex(v);
@@ -212,8 +213,16 @@ class WorldReader {
                                      : "";
     std::string reason;
     s->mesh = loadMeshUri(resolver_, mesh.Uri(), base_dir, &reason);
-    if (!s->mesh && collides) throw LoadError(where + ": " + reason);
-    if (!s->mesh) mesh_warnings_.push_back(where + ": " + reason + ": not drawn");
+    // Gazebo goes on without a mesh it cannot find (a model of its online database that is
+    // not installed, as turtlebot3_house's mailbox): so does the world, saying so. A file
+    // that is found but cannot be read is an error.
+    if (!s->mesh && collides && reason.rfind("file not found", 0) != 0) {
+      throw LoadError(where + ": " + reason);
+    }
+    if (!s->mesh) {
+      mesh_warnings_.push_back(where + ": " + reason +
+                               (collides ? ": left out (nothing collides with it)" : ": not drawn"));
+    }
     if (!mesh.Submesh().empty()) {
       mesh_warnings_.push_back(where + ": <submesh> '" + mesh.Submesh() +
                                "' is not supported: the whole mesh is used");

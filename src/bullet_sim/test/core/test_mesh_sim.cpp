@@ -149,12 +149,27 @@ TEST_F(MeshWorld, MeshBurgerDrivesLikeThePrimitiveBurger) {
   EXPECT_NEAR(meshes, primitive, 0.03 * primitive);
 }
 
-TEST_F(MeshWorld, MissingWorldCollisionMeshNamesModelLinkUriAndFolder) {
+TEST_F(MeshWorld, MissingWorldCollisionMeshIsLeftOutWithAWarningNamingModelLinkUriAndFolder) {
+  // As Gazebo, which goes on without a model of its online database that is not installed.
   const std::string path =
       writeWorld(dir_, staticMeshModel("statue", "0 0 0 0 0 0", "missing.stl", "missing.stl"));
-  EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path, plainResolver()); }),
-            path + ": model 'statue' link 'link' collision mesh 'missing.stl': file not found "
-                   "(searched " + dir_ + ")");
+  const WorldSpec world = loadWorldFile(path, plainResolver());
+  EXPECT_TRUE(hasWarning(world.warnings, path + ": model 'statue' link 'link' collision mesh "
+                                                "'missing.stl': file not found (searched " +
+                                                dir_ + "): left out (nothing collides with it)"));
+  for (const StaticShape& s : world.shapes) EXPECT_FALSE(s.model == "statue" && s.collides);
+}
+
+TEST_F(MeshWorld, UnreadableWorldCollisionMeshStopsTheLoad) {
+  bullet_sim_test::writeText(dir_ + "/broken.stl", "solid? no: garbage\n");
+  const std::string path =
+      writeWorld(dir_, staticMeshModel("statue", "0 0 0 0 0 0", "broken.stl", "broken.stl"));
+  const std::string error = loadErrorOf([&] { loadWorldFile(path, plainResolver()); });
+  EXPECT_EQ(error.rfind(path + ": model 'statue' link 'link' collision mesh 'broken.stl': " +
+                            dir_ + "/broken.stl: cannot read mesh",
+                        0),
+            0u)
+      << error;
 }
 
 TEST_F(MeshWorld, MissingWorldVisualMeshIsAWarning) {
