@@ -80,14 +80,17 @@ class TextureCamera : public ::testing::Test {
 
   /// A model folder `sign` whose box (0.05 deep, 0.6 wide, 0.6 high) wears material
   /// `sign_face` of its own script, as an autorace traffic sign does.
-  void writeSignModel(const std::string& texture_file) {
+  void writeSignModel(const std::string& texture_file, bool is_static = true) {
     const std::string model = dir_ + "/sign";
     writeText(model + "/model.config",
               "<?xml version='1.0'?><model><name>sign</name><sdf version='1.6'>model.sdf</sdf>"
               "</model>");
     writeText(model + "/model.sdf",
-              "<?xml version='1.0'?><sdf version='1.6'><model name='sign'><static>true</static>"
-              "<link name='box'><visual name='visual'><geometry><box><size>0.05 0.6 0.6</size>"
+              "<?xml version='1.0'?><sdf version='1.6'><model name='sign'><static>" +
+                  std::string(is_static ? "true" : "false") +
+                  "</static><link name='box'><inertial><mass>1</mass></inertial>"
+                  "<collision name='c'><geometry><box><size>0.05 0.6 0.6</size></box>"
+                  "</geometry></collision><visual name='visual'><geometry><box><size>0.05 0.6 0.6</size>"
               "</box></geometry><material><script>"
               "<uri>model://sign/materials/scripts</uri><uri>model://sign/materials/textures</uri>"
               "<name>sign_face</name></script></material></visual></link></model></sdf>");
@@ -123,6 +126,19 @@ TEST_F(TextureCamera, AScriptTextureOnABoxFaceIsUprightAndUnmirrored) {
   EXPECT_EQ(seen(image, x, 0.15, z + 0.15), lit(255, 0, 0));
   EXPECT_EQ(seen(image, x, -0.15, z + 0.15), lit(0, 255, 0));
   EXPECT_EQ(seen(image, x, 0.15, z - 0.15), lit(0, 0, 255));
+  EXPECT_EQ(seen(image, x, -0.15, z - 0.15), lit(255, 255, 255));
+}
+
+TEST_F(TextureCamera, AMovableModelWearsItsScriptTextureToo) {
+  // The same sign, not static (as TurtleBot3's autorace tunnel and bars): a model of the
+  // world simulated as a body, drawn with its texture. It stands on nothing: rendered at
+  // its first pose, before any step.
+  writeSignModel("sign.png", false);
+  const WorldSpec world = signWorld();
+  ASSERT_EQ(world.models.size(), 1u);
+  const ImageData image = render(world);
+  const double x = 1.475, z = 0.305;
+  EXPECT_EQ(seen(image, x, 0.15, z + 0.15), lit(255, 0, 0));
   EXPECT_EQ(seen(image, x, -0.15, z - 0.15), lit(255, 255, 255));
 }
 
