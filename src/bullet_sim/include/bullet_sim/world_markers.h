@@ -2,6 +2,7 @@
 #define BULLET_SIM_WORLD_MARKERS_H
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,15 @@ struct MarkerShape {
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
   std::string mesh_resource;  ///< Mesh only: "file://" and the mesh file's path; scale_m is
                               ///< the mesh's scale
+  /// Mesh only: the file has textures of its own, which a viewer should draw (RViz:
+  /// mesh_use_embedded_materials with the colour left 0 0 0 0).
+  bool embedded_materials = false;
+  /// A box or finite plane painted by a material script: its geometry and texture. Its type
+  /// is Mesh, with no mesh_resource yet: the publisher writes a textured mesh of it
+  /// (writeTexturedMesh in textured_mesh.h) and names that file; pose is the geometry's
+  /// frame, scale_m 1 1 1.
+  std::optional<Geometry> textured_geometry;
+  TextureRef texture;
 };
 
 /// How planes are drawn: a plane is a box this thin, its top face lying `plane_drop_m` below

@@ -23,10 +23,19 @@ void drawPlane(const Geometry& g, const PlaneDrawing& planes, MarkerShape* m) {
 /// The marker of a geometry whose frame is at `pose` in the world; `mesh` holds a mesh's
 /// triangles (the marker names its file). The one place a geometry kind becomes a marker
 /// type: the spec sizes are radii for round shapes, a marker's scale their full extents.
-MarkerShape markerOf(const Geometry& g, const TriangleMesh* mesh, const Pose3& pose,
-                     const PlaneDrawing& planes) {
+MarkerShape markerOf(const Geometry& g, const TriangleMesh* mesh, const TextureRef& texture,
+                     const Pose3& pose, const PlaneDrawing& planes) {
   MarkerShape m;
   m.pose = pose;
+  const bool finite_plane = g.kind == Geometry::Plane && g.size.x() > 0 && g.size.y() > 0;
+  if (!texture.path.empty() && (g.kind == Geometry::Box || finite_plane)) {
+    m.type = MarkerShape::Mesh;
+    m.scale_m = Eigen::Vector3d::Ones();
+    m.textured_geometry = g;
+    m.texture = texture;
+    if (finite_plane) m.pose.position -= (pose.orientation * g.normal.normalized()) * planes.plane_drop_m;
+    return m;
+  }
   const double diameter = 2.0 * g.size.x();
   switch (g.kind) {
     case Geometry::Box:
@@ -48,6 +57,7 @@ MarkerShape markerOf(const Geometry& g, const TriangleMesh* mesh, const Pose3& p
       m.type = MarkerShape::Mesh;
       m.scale_m = g.size;
       m.mesh_resource = "file://" + mesh->path;
+      for (const MeshPart& part : mesh->parts) m.embedded_materials |= !part.texture_path.empty();
       break;
   }
   return m;
@@ -60,7 +70,7 @@ std::vector<MarkerShape> worldShapeMarkers(const WorldSpec& world, const PlaneDr
   std::map<std::string, int> next_id;
   for (const StaticShape& s : world.shapes) {
     if (s.kind == Geometry::Mesh && !s.mesh) continue;  // unreadable: warned at load
-    MarkerShape m = markerOf(s, s.mesh.get(), s.pose, planes);
+    MarkerShape m = markerOf(s, s.mesh.get(), s.texture, s.pose, planes);
     m.ns = s.model;
     m.id = next_id[s.model]++;
     m.rgba = s.rgba;
@@ -79,7 +89,7 @@ std::vector<MarkerShape> modelMarkers(const std::string& model, const RobotSpec&
     const auto link = T_world_link.find(v.link);
     if (link == T_world_link.end() || (v.kind == Geometry::Mesh && !v.mesh)) continue;
     const Pose3 pose = toPose3(link->second * toIsometry(v.pose_in_link));
-    MarkerShape m = markerOf(v, v.mesh.get(), pose, PlaneDrawing());
+    MarkerShape m = markerOf(v, v.mesh.get(), v.texture, pose, PlaneDrawing());
     m.ns = model;
     m.id = static_cast<int>(i);
     m.rgba = v.rgba;
@@ -93,7 +103,7 @@ MarkerChanges::MarkerChanges(double position_tolerance_m, double angle_tolerance
 
 bool MarkerChanges::same(const MarkerShape& a, const MarkerShape& b) const {
   return a.type == b.type && a.scale_m == b.scale_m && a.rgba == b.rgba &&
-         a.mesh_resource == b.mesh_resource &&
+         a.mesh_resource == b.mesh_resource && a.texture.path == b.texture.path &&
          (a.pose.position - b.pose.position).norm() <= position_tolerance_m_ &&
          a.pose.orientation.angularDistance(b.pose.orientation) <= angle_tolerance_rad_;
 }

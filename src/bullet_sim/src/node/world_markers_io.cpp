@@ -2,7 +2,12 @@
 
 #include "conversions.h"
 
+#include <cstdlib>
+
+#include <ros/console.h>
 #include <visualization_msgs/MarkerArray.h>
+
+#include "bullet_sim/textured_mesh.h"
 
 namespace bullet_sim_node {
 namespace {
@@ -13,6 +18,40 @@ constexpr std::chrono::milliseconds kCheckPeriod{200};
 // Motions smaller than these do not resend the array.
 constexpr double kPositionToleranceM = 0.001;
 constexpr double kAngleToleranceRad = 0.002;
+
+/// Where the textured meshes of material-script textures are written for RViz:
+/// $ROS_HOME/bullet_sim/marker_meshes (ROS_HOME defaults to ~/.ros, as for ROS's logs).
+std::string markerMeshFolder() {
+  const char* ros_home = std::getenv("ROS_HOME");
+  const char* home = std::getenv("HOME");
+  const std::string base = ros_home ? ros_home : std::string(home ? home : "/tmp") + "/.ros";
+  return base + "/bullet_sim/marker_meshes";
+}
+
+/// A textured box or plane as a mesh RViz draws with its texture; when the mesh cannot be
+/// written, the plain shape in its colour (and one warning).
+void setTexturedShape(const bullet_sim::MarkerShape& shape, visualization_msgs::Marker* m) {
+  std::string reason;
+  const std::string path = bullet_sim::writeTexturedMesh(*shape.textured_geometry, shape.texture,
+                                                         markerMeshFolder(), &reason);
+  if (!path.empty()) {
+    m->type = visualization_msgs::Marker::MESH_RESOURCE;
+    m->mesh_resource = "file://" + path;
+    m->mesh_use_embedded_materials = true;
+    return;
+  }
+  ROS_WARN_STREAM_ONCE("world marker of " << shape.ns << " drawn without its texture "
+                                          << shape.texture.path << ": " << reason);
+  const sim_render::Geometry& g = *shape.textured_geometry;
+  m->type = visualization_msgs::Marker::CUBE;
+  m->scale.x = g.size.x();
+  m->scale.y = g.size.y();
+  m->scale.z = g.kind == sim_render::Geometry::Box ? g.size.z() : 0.002;
+  m->color.r = shape.rgba[0];
+  m->color.g = shape.rgba[1];
+  m->color.b = shape.rgba[2];
+  m->color.a = shape.rgba[3];
+}
 
 visualization_msgs::Marker toMarkerMsg(const bullet_sim::MarkerShape& shape) {
   visualization_msgs::Marker m;
@@ -40,6 +79,12 @@ visualization_msgs::Marker toMarkerMsg(const bullet_sim::MarkerShape& shape) {
   m.color.b = shape.rgba[2];
   m.color.a = shape.rgba[3];
   m.frame_locked = false;
+  if (shape.embedded_materials) {
+    // The file's own textures, untinted: RViz blends in any colour that is not 0 0 0 0.
+    m.mesh_use_embedded_materials = true;
+    m.color = std_msgs::ColorRGBA();
+  }
+  if (shape.textured_geometry) setTexturedShape(shape, &m);
   return m;
 }
 

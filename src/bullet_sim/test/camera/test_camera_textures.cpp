@@ -14,6 +14,7 @@
 #include "../core/mesh_fixtures.h"
 #include "bullet_sim/camera_renderer.h"
 #include "bullet_sim/simulation.h"
+#include "bullet_sim/world_markers.h"
 #include "bullet_sim/world_spec.h"
 
 namespace {
@@ -127,6 +128,14 @@ TEST_F(TextureCamera, AScriptTextureOnABoxFaceIsUprightAndUnmirrored) {
   EXPECT_EQ(seen(image, x, -0.15, z + 0.15), lit(0, 255, 0));
   EXPECT_EQ(seen(image, x, 0.15, z - 0.15), lit(0, 0, 255));
   EXPECT_EQ(seen(image, x, -0.15, z - 0.15), lit(255, 255, 255));
+  // Its world marker is a mesh to be written with the texture, at the box's own pose.
+  const std::vector<MarkerShape> markers = worldShapeMarkers(world);
+  ASSERT_EQ(markers.size(), 1u);
+  EXPECT_EQ(markers[0].type, MarkerShape::Mesh);
+  ASSERT_TRUE(markers[0].textured_geometry.has_value());
+  EXPECT_EQ(markers[0].textured_geometry->kind, Geometry::Box);
+  EXPECT_EQ(markers[0].texture.path, world.shapes[0].texture.path);
+  EXPECT_TRUE(markers[0].pose.position.isApprox(Vector3d(1.5, 0, 0.305)));
 }
 
 TEST_F(TextureCamera, AMovableModelWearsItsScriptTextureToo) {
