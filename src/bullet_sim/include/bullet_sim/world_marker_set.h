@@ -23,6 +23,10 @@ class WorldMarkerSet {
   /// Draws the model `name` (a robot of the simulation) with the world from now on.
   void track(const std::string& name);
 
+  /// Draws every model of the simulation but `except`, those spawned later included, as
+  /// Gazebo's window shows every model (a robot without a robot_state_publisher too).
+  void trackEveryModelBut(std::set<std::string> except);
+
   /// The whole set (static shapes first) when it differs from what the last call returned
   /// (the first call always returns it); nothing when no tracked model moved. A tracked
   /// model the simulation no longer has is dropped.
@@ -31,6 +35,8 @@ class WorldMarkerSet {
  private:
   std::vector<MarkerShape> static_markers_;
   std::set<std::string> tracked_;
+  bool track_every_model_ = false;
+  std::set<std::string> untracked_;  ///< when tracking every model: those left out
   MarkerChanges changes_;
   bool sent_ = false;
 };

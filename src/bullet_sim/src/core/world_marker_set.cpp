@@ -14,9 +14,20 @@ void WorldMarkerSet::track(const std::string& name) {
   sent_ = false;
 }
 
+void WorldMarkerSet::trackEveryModelBut(std::set<std::string> except) {
+  track_every_model_ = true;
+  untracked_ = std::move(except);
+  sent_ = false;
+}
+
 std::optional<std::vector<MarkerShape>> WorldMarkerSet::update(const Simulation& sim) {
   const std::vector<std::string> models = sim.robotNames();
   bool changed = !sent_;
+  if (track_every_model_) {
+    for (const std::string& name : models) {
+      if (!untracked_.count(name)) changed |= tracked_.insert(name).second;
+    }
+  }
   for (auto it = tracked_.begin(); it != tracked_.end();) {
     const bool gone = std::find(models.begin(), models.end(), *it) == models.end();
     changed |= gone;

@@ -15,6 +15,8 @@ namespace {
 // A moving model is redrawn this often at most: smooth enough to follow in RViz, and the
 // check costs nothing noticeable when the simulation runs many times real time.
 constexpr std::chrono::milliseconds kCheckPeriod{200};
+// Spawned robots drive: followed 20 times a second, a few markers each.
+constexpr std::chrono::milliseconds kModelCheckPeriod{50};
 // Motions smaller than these do not resend the array.
 constexpr double kPositionToleranceM = 0.001;
 constexpr double kAngleToleranceRad = 0.002;
@@ -93,20 +95,32 @@ visualization_msgs::Marker toMarkerMsg(const bullet_sim::MarkerShape& shape) {
 WorldMarkersIo::WorldMarkersIo(const bullet_sim::Simulation& sim, const ros::NodeHandle& nh)
     : sim_(sim),
       markers_(sim.world(), kPositionToleranceM, kAngleToleranceRad),
-      last_check_(std::chrono::steady_clock::now()) {
+      model_markers_(bullet_sim::WorldSpec(), kPositionToleranceM, kAngleToleranceRad),
+      last_check_(std::chrono::steady_clock::now()),
+      last_model_check_(last_check_) {
   ros::NodeHandle handle(nh);
   pub_ = handle.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
-  if (const auto all = markers_.update(sim_)) publish(*all);
+  model_pub_ = handle.advertise<visualization_msgs::MarkerArray>("model_markers", 1, true);
+  std::set<std::string> world_models;
+  for (const bullet_sim::WorldModel& model : sim.world().models) world_models.insert(model.name);
+  model_markers_.trackEveryModelBut(world_models);
+  if (const auto all = markers_.update(sim_)) publish(pub_, *all);
+  if (const auto all = model_markers_.update(sim_)) publish(model_pub_, *all);
 }
 
 void WorldMarkersIo::update() {
   const auto now = std::chrono::steady_clock::now();
+  if (now - last_model_check_ >= kModelCheckPeriod) {
+    last_model_check_ = now;
+    if (const auto all = model_markers_.update(sim_)) publish(model_pub_, *all);
+  }
   if (now - last_check_ < kCheckPeriod) return;
   last_check_ = now;
-  if (const auto all = markers_.update(sim_)) publish(*all);
+  if (const auto all = markers_.update(sim_)) publish(pub_, *all);
 }
 
-void WorldMarkersIo::publish(const std::vector<bullet_sim::MarkerShape>& markers) {
+void WorldMarkersIo::publish(const ros::Publisher& pub,
+                             const std::vector<bullet_sim::MarkerShape>& markers) {
   visualization_msgs::MarkerArray array;
   // The array is always complete: clear what a listener drew before (a deleted model's
   // markers with it), then draw everything again.
@@ -115,7 +129,7 @@ void WorldMarkersIo::publish(const std::vector<bullet_sim::MarkerShape>& markers
   clear.action = visualization_msgs::Marker::DELETEALL;
   array.markers.push_back(clear);
   for (const auto& shape : markers) array.markers.push_back(toMarkerMsg(shape));
-  pub_.publish(array);
+  pub.publish(array);
 }
 
 }  // namespace bullet_sim_node

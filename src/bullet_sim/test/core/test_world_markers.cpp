@@ -259,6 +259,33 @@ TEST(WorldMarkerSet, RepublishesWhenATrackedModelMoves) {
   EXPECT_EQ(crateMarker(*without), nullptr);
 }
 
+TEST(WorldMarkerSet, EveryModelButTheExceptedIsDrawnSpawnedLaterIncluded) {
+  // The spawned models' set: no world shapes, every robot the simulation has but those
+  // excepted, as Gazebo's window shows them (a robot without a robot_state_publisher too).
+  const WorldSpec world = bullet_sim_test::flatWorld();
+  Simulation sim(world, SimConfig{});
+  Pose3 start;
+  start.position = {0, 0, 0.05};
+  sim.spawnRobot("crate", parseRobot(kCrate, "crate"), start);
+  WorldMarkerSet models{WorldSpec()};
+  models.trackEveryModelBut({"crate"});
+  auto first = models.update(sim);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_TRUE(first->empty());  // the crate is excepted
+  EXPECT_FALSE(models.update(sim).has_value());
+  start.position = {2, 0, 0.05};
+  sim.spawnRobot("second", parseRobot(kCrate, "second"), start);
+  auto spawned = models.update(sim);
+  ASSERT_TRUE(spawned.has_value());
+  ASSERT_EQ(spawned->size(), 1u);
+  EXPECT_EQ(spawned->front().ns, "second");
+  EXPECT_NEAR(spawned->front().pose.position.x(), 2, 1e-9);
+  sim.deleteRobot("second");
+  auto deleted = models.update(sim);
+  ASSERT_TRUE(deleted.has_value());
+  EXPECT_TRUE(deleted->empty());
+}
+
 TEST(WorldMarkerSet, WithoutTrackedModelsTheWorldIsSentOnce) {
   const WorldSpec world = bullet_sim_test::flatWorld();
   Simulation sim(world, SimConfig{});

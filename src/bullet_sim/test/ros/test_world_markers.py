@@ -98,6 +98,30 @@ class WorldMarkers(unittest.TestCase):
         self.assertIn('ground_plane', names)
         self.assertIn('start_line', names)
 
+    def test_the_spawned_burger_is_on_model_markers_at_its_links(self):
+        # Gazebo's window shows a robot whatever else runs: here its visuals come on
+        # /gazebo/model_markers, and not with the world's. The Burger spawned at the
+        # origin, paused: its visuals lie within its 0.14 m footprint, up to the flag's top.
+        received = threading.Event()
+        arrays = []
+
+        def on_array(msg):
+            arrays.append(msg)
+            received.set()
+        sub = rospy.Subscriber('/gazebo/model_markers', MarkerArray, on_array)
+        self.assertTrue(received.wait(60), 'no message on /gazebo/model_markers within 60 s')
+        sub.unregister()
+        markers = arrays[-1].markers
+        self.assertEqual(markers[0].action, Marker.DELETEALL)
+        self.assertEqual({m.ns for m in markers[1:]}, {'burger'})
+        self.assertNotIn('burger', {m.ns for m in self.array.markers})
+        self.assertGreaterEqual(len(markers) - 1, 8)  # base, wheels, caster, lidar, poles, ...
+        for m in markers[1:]:
+            self.assertEqual(m.header.frame_id, 'world')
+            self.assertLess(math.hypot(m.pose.position.x, m.pose.position.y), 0.12, m.id)
+            self.assertGreater(m.pose.position.z, 0.0)
+            self.assertLess(m.pose.position.z, 0.6)
+
 
 if __name__ == '__main__':
     rostest.rosrun('bullet_sim', 'world_markers', WorldMarkers)
