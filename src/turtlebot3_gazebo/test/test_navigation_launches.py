@@ -142,6 +142,18 @@ class TestLaunchContents(unittest.TestCase):
             self.assertFalse(str(value).startswith('/'), '%s: %s' % (key, value))
         self.assertIs(params['/use_sim_time'], True)
 
+    def test_costmap_layers_as_noetic_names_them(self):
+        params = self.params('roundTrack_navigation.launch')
+        layers = {c: [p['name'] for p in params['/move_base/%s/plugins' % c]]
+                  for c in ('global_costmap', 'local_costmap')}
+        self.assertEqual(layers, {
+            'global_costmap': ['static_layer', 'obstacle_layer', 'inflation_layer'],
+            'local_costmap': ['obstacle_layer', 'inflation_layer']})
+        for costmap in layers:
+            prefix = '/move_base/%s/' % costmap
+            self.assertEqual(params[prefix + 'inflation_layer/inflation_radius'], 0.35)
+            self.assertEqual(params[prefix + 'obstacle_layer/scan/sensor_frame'], 'base_scan')
+
     def test_dwa_parameters_have_noetic_names(self):
         params = self.params('roundTrack_navigation.launch')
         self.assertEqual(params['/move_base/base_local_planner'], 'dwa_local_planner/DWAPlannerROS')
