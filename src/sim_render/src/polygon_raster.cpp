@@ -1,5 +1,7 @@
 #include "polygon_raster.h"
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,58 +32,9 @@ Edge makeEdge(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double orienta
   return e;
 }
 
-}  // namespace
-
-PolygonRasterizer::PolygonRasterizer(const CameraModel& camera)
-    : fx_(camera.fx()),
-      fy_(camera.fy()),
-      cx_(camera.cx()),
-      cy_(camera.cy()),
-      near_m_(camera.clip_near_m),
-      far_m_(camera.clip_far_m),
-      inverse_far_(static_cast<float>(1.0 / camera.clip_far_m)) {}
-
-RasterResult PolygonRasterizer::draw(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                     const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
-                                     const std::uint8_t rgb[3], const RasterTarget& target) const {
-  // Plane of the triangle: normal . p = d; d < 0 when the camera sees its front side.
-  const double d = normal.dot(a);
-  if (!(d < -1e-12)) return RasterResult::Culled;
-  if (a.x() < near_m_ && b.x() < near_m_ && c.x() < near_m_) return RasterResult::Culled;
-  if (a.x() > far_m_ && b.x() > far_m_ && c.x() > far_m_) return RasterResult::Culled;
-
-  const Eigen::Vector3d* in[3] = {&a, &b, &c};
-  Eigen::Vector3d clipped[kMaxVertices];
-  int count = 0;
-  bool was_clipped = false;
-  for (int i = 0; i < 3; ++i) {
-    const Eigen::Vector3d& p = *in[i];
-    const Eigen::Vector3d& q = *in[(i + 1) % 3];
-    const bool p_in = p.x() >= near_m_;
-    const bool q_in = q.x() >= near_m_;
-    if (p_in) clipped[count++] = p;
-    if (p_in != q_in) {
-      clipped[count++] = p_in ? nearCrossing(p, q, near_m_) : nearCrossing(q, p, near_m_);
-      was_clipped = true;
-    }
-  }
-  if (count < 3) return RasterResult::Culled;
-
-  Eigen::Vector2d screen[kMaxVertices];
-  for (int i = 0; i < count; ++i) {
-    const double inv_x = 1.0 / clipped[i].x();
-    screen[i] = Eigen::Vector2d(cx_ - fx_ * clipped[i].y() * inv_x, cy_ - fy_ * clipped[i].z() * inv_x);
-  }
-  // 1/x on the ray through (u, v) is (n_x - n_y (u - cx) / fx - n_z (v - cy) / fy) / d.
-  const Eigen::Vector3d plane(-normal.y() / (fx_ * d), -normal.z() / (fy_ * d),
-                              (normal.x() + normal.y() * cx_ / fx_ + normal.z() * cy_ / fy_) / d);
-  fill(screen, count, plane, rgb, target);
-  return was_clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
-}
-
-void PolygonRasterizer::fill(const Eigen::Vector2d* screen, int count,
-                             const Eigen::Vector3d& inverse_depth_plane, const std::uint8_t rgb[3],
-                             const RasterTarget& target) const {
+template <class WriteSpan>
+void forEachSpan(const Eigen::Vector2d* screen, int count, const RasterTarget& target,
+                 WriteSpan&& write) {
   double twice_area = 0.0;
   double v_min = screen[0].y(), v_max = screen[0].y();
   for (int i = 0; i < count; ++i) {
@@ -93,13 +46,12 @@ void PolygonRasterizer::fill(const Eigen::Vector2d* screen, int count,
   }
   if (twice_area == 0.0 || !std::isfinite(twice_area)) return;
   const double orientation = twice_area > 0.0 ? 1.0 : -1.0;
-  Edge edges[kMaxVertices];
+  Edge edges[4];
   for (int i = 0; i < count; ++i) edges[i] = makeEdge(screen[i], screen[(i + 1) % count], orientation);
 
   const int row_begin = static_cast<int>(std::ceil(std::max(v_min, -1.0)));
   const int row_end = static_cast<int>(std::floor(std::min(v_max, static_cast<double>(target.height))));
   const double width = target.width;
-  const float du = static_cast<float>(inverse_depth_plane.x());
   for (int row = std::max(row_begin, 0); row <= std::min(row_end, target.height - 1); ++row) {
     double lo = 0.0, hi = width;
     bool empty = false;
@@ -118,25 +70,174 @@ void PolygonRasterizer::fill(const Eigen::Vector2d* screen, int count,
     const int col_begin = static_cast<int>(std::ceil(lo));
     const int col_end = static_cast<int>(std::ceil(hi));
     if (col_begin >= col_end) continue;
+    write(row, col_begin, col_end);
+  }
+}
 
-    const float base = static_cast<float>(inverse_depth_plane.x() * col_begin +
-                                          inverse_depth_plane.y() * row + inverse_depth_plane.z());
+}  // namespace
+
+PolygonRasterizer::PolygonRasterizer(const CameraModel& camera)
+    : fx_(camera.fx()),
+      fy_(camera.fy()),
+      cx_(camera.cx()),
+      cy_(camera.cy()),
+      near_m_(camera.clip_near_m),
+      far_m_(camera.clip_far_m),
+      inverse_far_(static_cast<float>(1.0 / camera.clip_far_m)) {}
+
+int PolygonRasterizer::project(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
+                               Eigen::Vector2d* screen, Eigen::Vector3d* plane,
+                               bool* was_clipped) const {
+  // Plane of the triangle: normal . p = d; d < 0 when the camera sees its front side.
+  const double d = normal.dot(a);
+  if (!(d < -1e-12)) return 0;
+  if (a.x() < near_m_ && b.x() < near_m_ && c.x() < near_m_) return 0;
+  if (a.x() > far_m_ && b.x() > far_m_ && c.x() > far_m_) return 0;
+
+  const Eigen::Vector3d* in[3] = {&a, &b, &c};
+  Eigen::Vector3d clipped[kMaxVertices];
+  int count = 0;
+  *was_clipped = false;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d& p = *in[i];
+    const Eigen::Vector3d& q = *in[(i + 1) % 3];
+    const bool p_in = p.x() >= near_m_;
+    const bool q_in = q.x() >= near_m_;
+    if (p_in) clipped[count++] = p;
+    if (p_in != q_in) {
+      clipped[count++] = p_in ? nearCrossing(p, q, near_m_) : nearCrossing(q, p, near_m_);
+      *was_clipped = true;
+    }
+  }
+  if (count < 3) return 0;
+
+  for (int i = 0; i < count; ++i) {
+    const double inv_x = 1.0 / clipped[i].x();
+    screen[i] = Eigen::Vector2d(cx_ - fx_ * clipped[i].y() * inv_x, cy_ - fy_ * clipped[i].z() * inv_x);
+  }
+  // 1/x on the ray through (u, v) is (n_x - n_y (u - cx) / fx - n_z (v - cy) / fy) / d.
+  *plane = Eigen::Vector3d(-normal.y() / (fx_ * d), -normal.z() / (fy_ * d),
+                           (normal.x() + normal.y() * cx_ / fx_ + normal.z() * cy_ / fy_) / d);
+  return count;
+}
+
+Eigen::Vector3d PolygonRasterizer::attributePlane(const Eigen::Vector3d* corners,
+                                                  const Eigen::Vector3d& normal,
+                                                  const float value[3],
+                                                  const Eigen::Vector3d& inverse_depth_plane) const {
+  // s(P) = value[0] + g . (P - a) with g in the triangle's plane; on the ray through pixel
+  // (u, v), P = x r with r = (1, -(u - cx) / fx, -(v - cy) / fy), so
+  // s / x = g . r + (value[0] - g . a) / x: affine in (u, v).
+  Eigen::Matrix3d M;
+  M.row(0) = corners[1] - corners[0];
+  M.row(1) = corners[2] - corners[0];
+  M.row(2) = normal;
+  const Eigen::Vector3d g =
+      M.inverse() * Eigen::Vector3d(value[1] - value[0], value[2] - value[0], 0.0);
+  const double k = value[0] - g.dot(corners[0]);
+  return Eigen::Vector3d(-g.y() / fx_, -g.z() / fy_, g.x() + g.y() * cx_ / fx_ + g.z() * cy_ / fy_) +
+         k * inverse_depth_plane;
+}
+
+RasterResult PolygonRasterizer::draw(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                     const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
+                                     const std::uint8_t rgb[3], const RasterTarget& target) const {
+  Eigen::Vector2d screen[kMaxVertices];
+  Eigen::Vector3d plane;
+  bool clipped = false;
+  const int count = project(a, b, c, normal, screen, &plane, &clipped);
+  if (count == 0) return RasterResult::Culled;
+  const float du = static_cast<float>(plane.x());
+  const float inverse_far = inverse_far_;
+  // The colour in registers: stores through `pixel` could otherwise change what `rgb`
+  // points to, and it would be read again for every pixel.
+  const std::uint8_t r = rgb[0], g = rgb[1], bl = rgb[2];
+  forEachSpan(screen, count, target, [&](int row, int col_begin, int col_end) {
+    const float base = static_cast<float>(plane.x() * col_begin + plane.y() * row + plane.z());
     float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
     std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
-    const float inverse_far = inverse_far_;
-    // The colour in registers: stores through `pixel` could otherwise change what `rgb`
-    // points to, and it would be read again for every pixel.
-    const std::uint8_t r = rgb[0], g = rgb[1], b = rgb[2];
     for (int col = col_begin; col < col_end; ++col, pixel += 3) {
       const float inverse_depth = base + du * static_cast<float>(col - col_begin);
       if (inverse_depth > depth[col] && inverse_depth >= inverse_far) {
         depth[col] = inverse_depth;
         pixel[0] = r;
         pixel[1] = g;
-        pixel[2] = b;
+        pixel[2] = bl;
       }
     }
-  }
+  });
+  return clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
+}
+
+namespace {
+
+/// The mipmap level whose texel matches the pixel's footprint at (col, row): the larger
+/// of the texture coordinates' changes to the next column and row, in level-0 texels.
+int mipLevel(const Eigen::Vector3d& iz, const Eigen::Vector3d& uz, const Eigen::Vector3d& vz,
+             double col, double row, const Texture& texture) {
+  const double z = iz.x() * col + iz.y() * row + iz.z();
+  const double u = uz.x() * col + uz.y() * row + uz.z();
+  const double v = vz.x() * col + vz.y() * row + vz.z();
+  if (!(z > 0)) return 0;
+  const double z2 = z * z;
+  const double w = texture.width(), h = texture.height();
+  const double footprint = std::max(
+      {std::abs((uz.x() * z - u * iz.x()) / z2) * w, std::abs((vz.x() * z - v * iz.x()) / z2) * h,
+       std::abs((uz.y() * z - u * iz.y()) / z2) * w, std::abs((vz.y() * z - v * iz.y()) / z2) * h});
+  if (!(footprint > 1.0)) return 0;
+  const int last = static_cast<int>(texture.levels().size()) - 1;
+  return std::min(last, static_cast<int>(std::log2(footprint)));
+}
+
+std::uint8_t modulate(std::uint8_t texel, int factor) {
+  return static_cast<std::uint8_t>(std::min(255, (texel * factor + 128) >> 8));
+}
+
+}  // namespace
+
+RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                             const Eigen::Vector3d& c,
+                                             const Eigen::Vector3d& normal,
+                                             const TexturedCorners& corners,
+                                             const RasterTarget& target) const {
+  Eigen::Vector2d screen[kMaxVertices];
+  Eigen::Vector3d iz;
+  bool clipped = false;
+  const int count = project(a, b, c, normal, screen, &iz, &clipped);
+  if (count == 0) return RasterResult::Culled;
+  const Eigen::Vector3d abc[3] = {a, b, c};
+  const float us[3] = {corners.uv[0].x(), corners.uv[1].x(), corners.uv[2].x()};
+  const float vs[3] = {corners.uv[0].y(), corners.uv[1].y(), corners.uv[2].y()};
+  const Eigen::Vector3d uz = attributePlane(abc, normal, us, iz);
+  const Eigen::Vector3d vz = attributePlane(abc, normal, vs, iz);
+  const Texture& texture = *corners.texture;
+  const int factor[3] = {static_cast<int>(std::lround(corners.factor.x() * 256.0f)),
+                         static_cast<int>(std::lround(corners.factor.y() * 256.0f)),
+                         static_cast<int>(std::lround(corners.factor.z() * 256.0f))};
+  const float inverse_far = inverse_far_;
+  forEachSpan(screen, count, target, [&](int row, int col_begin, int col_end) {
+    const TextureLevel& level =
+        texture.levels()[mipLevel(iz, uz, vz, 0.5 * (col_begin + col_end - 1), row, texture)];
+    const float fw = static_cast<float>(level.width), fh = static_cast<float>(level.height);
+    float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
+    std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
+    for (int col = col_begin; col < col_end; ++col, pixel += 3) {
+      const float inverse_depth = static_cast<float>(iz.x() * col + iz.y() * row + iz.z());
+      if (!(inverse_depth > depth[col] && inverse_depth >= inverse_far)) continue;
+      depth[col] = inverse_depth;
+      const float w = 1.0f / inverse_depth;
+      const float u = static_cast<float>(uz.x() * col + uz.y() * row + uz.z()) * w;
+      const float v = static_cast<float>(vz.x() * col + vz.y() * row + vz.z()) * w;
+      const int x = std::min(level.width - 1, static_cast<int>((u - std::floor(u)) * fw));
+      const int y = std::min(level.height - 1, static_cast<int>((v - std::floor(v)) * fh));
+      const std::uint8_t* t = &level.rgb8[(static_cast<std::size_t>(y) * level.width + x) * 3];
+      pixel[0] = modulate(t[0], factor[0]);
+      pixel[1] = modulate(t[1], factor[1]);
+      pixel[2] = modulate(t[2], factor[2]);
+    }
+  });
+  return clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
 }
 
 }  // namespace detail

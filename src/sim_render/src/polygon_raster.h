@@ -2,6 +2,7 @@
 #pragma once
 
 #include "sim_render/camera_model.h"
+#include "sim_render/texture.h"
 
 #include <Eigen/Core>
 
@@ -20,6 +21,14 @@ struct RasterTarget {
 
 enum class RasterResult { Culled, Drawn, DrawnClipped };
 
+/// A texture as one triangle is painted with it: the coordinates of its corners and the
+/// light's factor per channel (colour times lighting; 1 leaves the texel as it is).
+struct TexturedCorners {
+  const Texture* texture = nullptr;
+  Eigen::Vector2f uv[3];
+  Eigen::Vector3f factor{1.0f, 1.0f, 1.0f};
+};
+
 /// Draws triangles given in the camera frame (Gazebo convention) with one flat colour.
 /// Depth is tested and stored as 1 / x (x = distance along the optical axis), which is an
 /// affine function of the pixel coordinates over a planar polygon, hence perspective-correct.
@@ -34,11 +43,25 @@ class PolygonRasterizer {
                     const Eigen::Vector3d& normal, const std::uint8_t rgb[3],
                     const RasterTarget& target) const;
 
+  /// As draw(), each pixel the texel under it (perspective-correct: u / x and v / x are
+  /// affine in the pixel coordinates, as 1 / x is) times `corners.factor`.
+  RasterResult drawTextured(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                            const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
+                            const TexturedCorners& corners, const RasterTarget& target) const;
+
  private:
   static constexpr int kMaxVertices = 4;  // a triangle cut by one plane
 
-  void fill(const Eigen::Vector2d* screen, int count, const Eigen::Vector3d& inverse_depth_plane,
-            const std::uint8_t rgb[3], const RasterTarget& target) const;
+  /// The triangle clipped by the near plane and projected: `screen` gets its corners.
+  /// Returns the corner count (0: nothing to draw) and sets `plane` to 1/x over the pixels.
+  int project(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+              const Eigen::Vector3d& normal, Eigen::Vector2d* screen, Eigen::Vector3d* plane,
+              bool* clipped) const;
+  /// The plane over the pixels of (attribute / x) for an attribute affine over the
+  /// triangle's plane, taking `value[i]` at corner i.
+  Eigen::Vector3d attributePlane(const Eigen::Vector3d* corners, const Eigen::Vector3d& normal,
+                                 const float value[3],
+                                 const Eigen::Vector3d& inverse_depth_plane) const;
 
   double fx_, fy_, cx_, cy_;
   double near_m_, far_m_;

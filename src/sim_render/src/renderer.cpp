@@ -105,7 +105,13 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) camera_vertices_[i] = T_camera_shape * mesh.vertices[i];
     const Eigen::Matrix3d R_camera_shape = T_camera_shape.linear();
     const Eigen::Matrix3d R_world_shape = shape.T_world_shape.linear();
-    const Eigen::Vector3f colour = shape.spec.rgba.head<3>();
+    const Texture* texture = shape.spec.texture.get();
+    const bool textured = texture && mesh.uvs.size() == mesh.vertices.size();
+    // Without coordinates a textured surface shows its texture's mean colour.
+    const Eigen::Vector3f colour =
+        texture && !textured
+            ? Eigen::Vector3f(shape.spec.rgba.head<3>().cwiseProduct(texture->meanColour()))
+            : Eigen::Vector3f(shape.spec.rgba.head<3>());
 
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       const auto& tri = mesh.triangles[t];
@@ -117,9 +123,18 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
 
       const double lambert = std::max(0.0, (R_world_shape * mesh.face_normals[t]).dot(to_light));
       const Eigen::Vector3f light = lighting.ambient + lighting.diffuse * static_cast<float>(lambert);
-      const std::uint8_t rgb[3] = {toByte(colour.x() * light.x()), toByte(colour.y() * light.y()),
-                                   toByte(colour.z() * light.z())};
-      const detail::RasterResult result = rasterizer.draw(a, b, c, normal, rgb, target);
+      detail::RasterResult result;
+      if (textured) {
+        detail::TexturedCorners corners;
+        corners.texture = texture;
+        for (int k = 0; k < 3; ++k) corners.uv[k] = mesh.uvs[tri[k]];
+        corners.factor = colour.cwiseProduct(light);
+        result = rasterizer.drawTextured(a, b, c, normal, corners, target);
+      } else {
+        const std::uint8_t rgb[3] = {toByte(colour.x() * light.x()), toByte(colour.y() * light.y()),
+                                     toByte(colour.z() * light.z())};
+        result = rasterizer.draw(a, b, c, normal, rgb, target);
+      }
       if (result != detail::RasterResult::Culled) ++stats_.triangles_drawn;
       if (result == detail::RasterResult::DrawnClipped) ++stats_.triangles_clipped;
     }

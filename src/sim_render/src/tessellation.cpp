@@ -145,6 +145,50 @@ void buildScaledMesh(Mesh& mesh, const ShapeSpec& spec) {
   }
 }
 
+/// Gazebo Classic's "unit_box" texture coordinates: the whole image on every face, upright
+/// on the side faces (v = 0 at the top), seen unmirrored from outside. `p` is the point
+/// divided by the half sizes (each coordinate -1..1), `n` its face's outward normal.
+Eigen::Vector2f boxUv(const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
+  double u = 0, v = 0;
+  if (n.x() > 0.5) {
+    u = 1 + p.y(), v = 1 - p.z();
+  } else if (n.x() < -0.5) {
+    u = 1 - p.y(), v = 1 - p.z();
+  } else if (n.y() > 0.5) {
+    u = 1 - p.x(), v = 1 - p.z();
+  } else if (n.y() < -0.5) {
+    u = 1 + p.x(), v = 1 - p.z();
+  } else if (n.z() > 0.5) {
+    u = 1 - p.y(), v = 1 - p.x();
+  } else {
+    u = 1 - p.y(), v = 1 + p.x();
+  }
+  return Eigen::Vector2f(static_cast<float>(u / 2), static_cast<float>(v / 2));
+}
+
+/// Texture coordinates for the kinds that have them (see ShapeSpec); none for the others.
+void addUvs(Mesh& mesh, const ShapeSpec& spec) {
+  if (!spec.texture) return;
+  if (spec.kind == Geometry::Box) {
+    const Eigen::Vector3d half = 0.5 * spec.size;
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+      mesh.uvs.push_back(boxUv(mesh.vertices[i].cwiseQuotient(half), mesh.face_normals[i / 3]));
+    }
+  } else if (spec.kind == Geometry::Plane && spec.size.x() > 0 && spec.size.y() > 0) {
+    // The quad's first edge runs along the plane's x axis, its last along its y axis.
+    const Eigen::Vector3d x_axis = (mesh.vertices[1] - mesh.vertices[0]).normalized();
+    const Eigen::Vector3d y_axis = (mesh.vertices[2] - mesh.vertices[1]).normalized();
+    for (const Eigen::Vector3d& p : mesh.vertices) {
+      mesh.uvs.emplace_back(static_cast<float>(0.5 + p.dot(x_axis) / spec.size.x()),
+                            static_cast<float>(0.5 - p.dot(y_axis) / spec.size.y()));
+    }
+  } else if (spec.kind == Geometry::Mesh &&
+             spec.triangles->uvs.size() == spec.triangles->vertices.size()) {
+    mesh.uvs = spec.triangles->uvs;
+  }
+  for (Eigen::Vector2f& uv : mesh.uvs) uv = spec.uv_transform.apply(uv);
+}
+
 }  // namespace
 
 Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
@@ -175,6 +219,7 @@ Mesh tessellate(const ShapeSpec& spec, const TessellationOptions& options) {
       buildScaledMesh(mesh, spec);
       break;
   }
+  addUvs(mesh, spec);
   for (const Eigen::Vector3d& v : mesh.vertices) {
     mesh.bounding_radius_m = std::max(mesh.bounding_radius_m, v.norm());
   }

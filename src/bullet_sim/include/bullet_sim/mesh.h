@@ -23,11 +23,20 @@ struct MeshPart {
   /// Diffuse colour of the part's material in the file (COLLADA, OBJ/MTL); none when the
   /// file gives none (STL), and the visual's own colour is used instead.
   std::optional<Eigen::Vector4f> rgba;
+  /// Texture coordinates, one per vertex (u from the left, v from the top row of the
+  /// image), when the part's material has a diffuse texture; otherwise empty.
+  std::vector<Eigen::Vector2f> uvs;
+  /// The diffuse texture's file, found as Gazebo does (beside the mesh, then in
+  /// ../materials/textures); empty when the material has none or it was not found.
+  std::string texture_path;
+  /// The texture's name as the file gives it when it was not found (for the warning).
+  std::string missing_texture;
 };
 
-/// A mesh file as Gazebo shows it: every node transform applied, COLLADA's <unit> and
-/// <up_axis> honoured (metres, Z up), triangles only (points and lines dropped).
-/// Textures are not read.
+/// A mesh file as Gazebo shows it: every node transform applied, COLLADA's <unit> applied
+/// and its <up_axis> ignored as Gazebo Classic does (vertices as written, Z up, in metres),
+/// triangles only (points and lines dropped). A material's diffuse texture comes with the
+/// part's texture coordinates.
 struct TriangleMesh {
   std::string path;  ///< the file it was read from
   std::vector<MeshPart> parts;

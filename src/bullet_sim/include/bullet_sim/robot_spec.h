@@ -87,6 +87,7 @@ struct VisualSpec : Geometry {
   Pose3 pose_in_link;
   /// The URDF <material> colour; a mesh part with a colour of its own keeps that (as RViz).
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  TextureRef texture;  ///< a Gazebo material script's texture (mesh files carry their own)
   std::shared_ptr<const TriangleMesh> mesh;   ///< Mesh: null when it could not be read
 };
 

@@ -3,6 +3,8 @@
 
 #include <Eigen/Geometry>
 
+#include <string>
+
 namespace bullet_sim {
 
 /// A rigid transform: position in metres and a unit quaternion.
@@ -15,6 +17,14 @@ struct Pose3 {
 struct Twist3 {
   Eigen::Vector3d linear{0, 0, 0};
   Eigen::Vector3d angular{0, 0, 0};
+};
+
+/// The image a surface is painted with and how its texture coordinates are mapped:
+/// uv' = uv_scale * uv + uv_offset (an OGRE texture_unit's `scale` and `scroll`).
+struct TextureRef {
+  std::string path;  ///< the image file; empty: no texture
+  Eigen::Vector2f uv_scale{1.0f, 1.0f};
+  Eigen::Vector2f uv_offset{0.0f, 0.0f};
 };
 
 }  // namespace bullet_sim

@@ -21,6 +21,7 @@ struct StaticShape : Geometry {
   std::shared_ptr<const TriangleMesh> mesh;
   /// The material colour; a mesh part with a colour of its own in the file keeps that.
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  TextureRef texture;  ///< a Gazebo material script's texture (mesh files carry their own)
   bool collides = true;              ///< false for visual-only geometry
 };
 

@@ -6,6 +6,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <sim_render/renderer.h>
 
 #include "bullet_sim/depth_camera.h"
@@ -53,6 +55,7 @@ class MeshTriangles {
         auto triangles = std::make_shared<sim_render::Mesh>();
         triangles->vertices = part.vertices;
         triangles->triangles = part.triangles;
+        triangles->uvs = part.uvs;
         it->second.push_back(std::move(triangles));
       }
     }
@@ -64,20 +67,79 @@ class MeshTriangles {
            std::vector<std::shared_ptr<const sim_render::Mesh>>> parts_;
 };
 
-/// The renderer's shapes of a geometry in colour `rgba`: one for a primitive; for a mesh,
-/// whose triangles `mesh` holds, one per part, a part without a colour of its own taking
-/// `rgba`. A mesh that could not be read (null) has none: the loader already warned.
+/// Texture images, each file decoded once (OpenCV) and shared by every shape showing it.
+class TextureImages {
+ public:
+  explicit TextureImages(std::vector<std::string>* warnings) : warnings_(warnings) {}
+
+  /// The image in `path`, or null (with one warning naming the file) when it cannot be read.
+  std::shared_ptr<const sim_render::Texture> load(const std::string& path) {
+    if (path.empty()) return nullptr;
+    auto [it, inserted] = images_.try_emplace(path);
+    if (!inserted) return it->second;
+    const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+    if (bgr.empty()) {
+      warnings_->push_back("texture " + path + ": cannot read the image: drawn in its colour");
+      return nullptr;
+    }
+    cv::Mat rgb;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    std::vector<uint8_t> bytes(rgb.total() * 3);
+    for (int row = 0; row < rgb.rows; ++row) {
+      std::copy(rgb.ptr<uint8_t>(row), rgb.ptr<uint8_t>(row) + rgb.cols * 3,
+                bytes.begin() + static_cast<size_t>(row) * rgb.cols * 3);
+    }
+    it->second = std::make_shared<const sim_render::Texture>(rgb.cols, rgb.rows, std::move(bytes));
+    return it->second;
+  }
+
+  void warn(const std::string& message) { warnings_->push_back(message); }
+
+ private:
+  std::vector<std::string>* warnings_;
+  std::map<std::string, std::shared_ptr<const sim_render::Texture>> images_;
+};
+
+/// What the renderer needs to draw shapes: mesh triangles and texture images, made once.
+struct ShapeSources {
+  MeshTriangles triangles;
+  TextureImages textures;
+  std::set<std::string> missing_reported;  ///< mesh files whose missing texture was named
+};
+
+/// The renderer's shapes of a geometry in colour `rgba` (with the material's `texture`, if
+/// any): one for a primitive; for a mesh, whose triangles `mesh` holds, one per part, a
+/// part without a colour of its own taking `rgba`, a part with a texture of its own showing
+/// it unshaded by any colour. A mesh that could not be read (null) has none: the loader
+/// already warned.
 std::vector<sim_render::ShapeSpec> shapesOf(const Geometry& geometry,
                                             const std::shared_ptr<const TriangleMesh>& mesh,
-                                            const Eigen::Vector4f& rgba,
-                                            MeshTriangles* triangles) {
-  if (geometry.kind != Geometry::Mesh) return {sim_render::ShapeSpec(geometry, rgba)};
+                                            const Eigen::Vector4f& rgba, const TextureRef& texture,
+                                            ShapeSources* sources) {
+  if (geometry.kind != Geometry::Mesh) {
+    sim_render::ShapeSpec shape(geometry, rgba);
+    shape.texture = sources->textures.load(texture.path);
+    shape.uv_transform.scale = texture.uv_scale;
+    shape.uv_transform.offset = texture.uv_offset;
+    return {shape};
+  }
   std::vector<sim_render::ShapeSpec> shapes;
   if (!mesh) return shapes;
-  const auto& parts = triangles->of(mesh);
+  const auto& parts = sources->triangles.of(mesh);
   for (size_t i = 0; i < parts.size(); ++i) {
-    sim_render::ShapeSpec part(geometry, mesh->parts[i].rgba.value_or(rgba));
+    const MeshPart& file_part = mesh->parts[i];
+    sim_render::ShapeSpec part(geometry, file_part.rgba.value_or(rgba));
     part.triangles = parts[i];
+    if (!file_part.missing_texture.empty() &&
+        sources->missing_reported.insert(mesh->path + file_part.missing_texture).second) {
+      sources->textures.warn(mesh->path + ": texture '" + file_part.missing_texture +
+                             "' not found beside the mesh or in ../materials/textures: "
+                             "drawn in its colour");
+    }
+    if (!file_part.texture_path.empty()) {
+      part.texture = sources->textures.load(file_part.texture_path);
+      if (part.texture) part.rgba = Eigen::Vector4f::Ones();
+    }
     shapes.push_back(std::move(part));
   }
   return shapes;
@@ -142,7 +204,7 @@ struct CameraRenderer::Impl {
     scene.lighting().direction = world.light_direction;
     scene.lighting().ambient = world.ambient.head<3>();
     for (const StaticShape& s : world.shapes) {
-      for (const sim_render::ShapeSpec& spec : shapesOf(s, s.mesh, s.rgba, &mesh_triangles)) {
+      for (const sim_render::ShapeSpec& spec : shapesOf(s, s.mesh, s.rgba, s.texture, &sources)) {
         try {
           scene.add(spec, toIsometry(s.pose));
         } catch (const std::invalid_argument& e) {
@@ -159,7 +221,7 @@ struct CameraRenderer::Impl {
     robot->camera_link_hints.assign(spec.cameras.size(), 0);
     for (const VisualSpec& v : spec.visuals) {
       const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
-      for (const sim_render::ShapeSpec& shape : shapesOf(v, v.mesh, v.rgba, &mesh_triangles)) {
+      for (const sim_render::ShapeSpec& shape : shapesOf(v, v.mesh, v.rgba, v.texture, &sources)) {
         try {
           robot->visuals.push_back({v.link, 0, T_link_visual, scene.add(shape, T_link_visual)});
         } catch (const std::invalid_argument& e) {
@@ -213,10 +275,10 @@ struct CameraRenderer::Impl {
   }
 
   const Simulation& sim;
-  MeshTriangles mesh_triangles;
   sim_render::Scene scene;
   std::map<std::string, RobotScene> robots;
   std::vector<std::string> warnings;
+  ShapeSources sources{MeshTriangles(), TextureImages(&warnings)};
   std::vector<LinkPose> camera_robot_poses, other_poses;
   std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
 };

@@ -23,7 +23,9 @@ namespace {
 
 // Wire format (host byte order, the same machine): a status byte, then the error text or
 // the part count and each part: vertex count, vertices (3 doubles), triangle count,
-// triangles (3 uint32), a byte for "has colour", the colour (4 floats). Counts are uint64.
+// triangles (3 uint32), a byte for "has colour", the colour (4 floats), the texture
+// coordinates (count, 2 floats each), the texture path and the missing texture's name
+// (length, bytes). Counts are uint64.
 constexpr char kOk = 0;
 // Far beyond any real mesh (a 100 MB STL reads in about a second here).
 constexpr double kReadTimeoutS = 60;
@@ -32,6 +34,11 @@ constexpr char kLoadError = 1;
 template <typename T>
 void put(std::string* out, const T& value) {
   out->append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+void putText(std::string* out, const std::string& text) {
+  put(out, static_cast<uint64_t>(text.size()));
+  out->append(text);
 }
 
 std::string encode(const TriangleMesh& mesh) {
@@ -47,6 +54,10 @@ std::string encode(const TriangleMesh& mesh) {
     put(&out, static_cast<char>(part.rgba.has_value()));
     const Eigen::Vector4f rgba = part.rgba.value_or(Eigen::Vector4f::Zero());
     put(&out, std::array<float, 4>{rgba[0], rgba[1], rgba[2], rgba[3]});
+    put(&out, static_cast<uint64_t>(part.uvs.size()));
+    for (const Eigen::Vector2f& uv : part.uvs) put(&out, std::array<float, 2>{uv.x(), uv.y()});
+    putText(&out, part.texture_path);
+    putText(&out, part.missing_texture);
   }
   return out;
 }
@@ -64,6 +75,15 @@ class Reader {
     std::memcpy(&value, data_.data() + pos_, sizeof(T));
     pos_ += sizeof(T);
     return value;
+  }
+  std::string text() {
+    const auto size = get<uint64_t>();
+    if (pos_ + size > data_.size()) {
+      throw LoadError(path_ + ": cannot read mesh: the reading process's answer is cut short");
+    }
+    std::string out = data_.substr(pos_, size);
+    pos_ += size;
+    return out;
   }
 
  private:
@@ -89,6 +109,13 @@ TriangleMesh decode(const std::string& data, const std::string& path) {
     const bool has_rgba = in.get<char>() != 0;
     const auto rgba = in.get<std::array<float, 4>>();
     if (has_rgba) part.rgba = Eigen::Vector4f(rgba[0], rgba[1], rgba[2], rgba[3]);
+    part.uvs.resize(in.get<uint64_t>());
+    for (Eigen::Vector2f& uv : part.uvs) {
+      const auto st = in.get<std::array<float, 2>>();
+      uv = Eigen::Vector2f(st[0], st[1]);
+    }
+    part.texture_path = in.text();
+    part.missing_texture = in.text();
   }
   return mesh;
 }

@@ -4,7 +4,6 @@
 #include <map>
 
 #include <assimp/Importer.hpp>
-#include <assimp/commonMetaData.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -25,21 +24,6 @@ Eigen::Matrix4d toEigen(const aiMatrix4x4& m) {
   return out;
 }
 
-/// assimp's COLLADA importer applies <unit> and turns every file to Y up (it rotates Z_UP
-/// and X_UP data); Gazebo shows COLLADA Z up. Turning assimp's Y up to Z up (+90 degrees
-/// about x) therefore gives Gazebo's result for every <up_axis>: a Z_UP file comes out
-/// as written, a Y_UP file stood up.
-Eigen::Matrix4d importerToGazebo(const aiScene& scene) {
-  Eigen::Matrix4d T = Eigen::Matrix4d::Identity();
-  aiString format;
-  if (scene.mMetaData && scene.mMetaData->Get(AI_METADATA_SOURCE_FORMAT, format) &&
-      std::string(format.C_Str()).find("Collada") != std::string::npos) {
-    T.topLeftCorner<3, 3>() =
-        Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  }
-  return T;
-}
-
 /// The file's own diffuse colour of a material; none for assimp's stand-in material
 /// (STL, OBJ without MTL), which is not the file's.
 std::optional<Eigen::Vector4f> diffuseOf(const aiMaterial& material) {
@@ -53,14 +37,34 @@ std::optional<Eigen::Vector4f> diffuseOf(const aiMaterial& material) {
   return Eigen::Vector4f(c.r, c.g, c.b, c.a);
 }
 
+/// The file of a material's diffuse texture as Gazebo Classic finds it: the name as
+/// written (absolute or relative to the mesh's folder), then its file name in the mesh's
+/// folder and in ../materials/textures beside it. Sets `missing` when none exists.
+std::string textureOf(const aiMaterial& material, const fs::path& mesh_dir, std::string* missing) {
+  aiString name;
+  if (material.GetTexture(aiTextureType_DIFFUSE, 0, &name) != AI_SUCCESS) return "";
+  std::string written = name.C_Str();
+  if (written.rfind("file://", 0) == 0) written = written.substr(7);
+  if (written.empty() || written[0] == '*') return "";  // none, or embedded: not read
+  const fs::path file = fs::path(written).filename();
+  for (const fs::path& candidate :
+       {fs::path(written).is_absolute() ? fs::path(written) : mesh_dir / written, mesh_dir / file,
+        mesh_dir / ".." / "materials" / "textures" / file}) {
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return fs::weakly_canonical(candidate, ec).string();
+  }
+  *missing = written;
+  return "";
+}
+
 /// Collects the triangles of every node, transformed into the file's root frame, one
 /// part per material.
 class SceneFlattener {
  public:
-  explicit SceneFlattener(const aiScene& scene) : scene_(scene) {}
+  SceneFlattener(const aiScene& scene, const fs::path& dir) : scene_(scene), dir_(dir) {}
 
   std::vector<MeshPart> flatten() {
-    visit(*scene_.mRootNode, importerToGazebo(scene_));
+    visit(*scene_.mRootNode, Eigen::Matrix4d::Identity());
     std::vector<MeshPart> parts;
     for (auto& [material, part] : parts_) {
       if (!part.triangles.empty()) parts.push_back(std::move(part));
@@ -79,12 +83,23 @@ class SceneFlattener {
     auto [it, inserted] = parts_.try_emplace(mesh.mMaterialIndex);
     MeshPart& part = it->second;
     if (inserted && mesh.mMaterialIndex < scene_.mNumMaterials) {
-      part.rgba = diffuseOf(*scene_.mMaterials[mesh.mMaterialIndex]);
+      const aiMaterial& material = *scene_.mMaterials[mesh.mMaterialIndex];
+      part.rgba = diffuseOf(material);
+      part.texture_path = textureOf(material, dir_, &part.missing_texture);
     }
+    // Coordinates for a textured part only, one per vertex (0 0 where a mesh of the part
+    // has none); v counted from the image's top row.
+    const bool textured = !part.texture_path.empty();
+    const bool has_uvs = mesh.HasTextureCoords(0);
     const auto base = static_cast<uint32_t>(part.vertices.size());
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D& p = mesh.mVertices[v];
       part.vertices.push_back((T * Eigen::Vector4d(p.x, p.y, p.z, 1.0)).head<3>());
+      if (textured) {
+        part.uvs.push_back(has_uvs ? Eigen::Vector2f(mesh.mTextureCoords[0][v].x,
+                                                     1.0f - mesh.mTextureCoords[0][v].y)
+                                   : Eigen::Vector2f::Zero());
+      }
     }
     // A mirroring transform turns the winding around; keep faces pointing outwards.
     const bool mirrored = T.topLeftCorner<3, 3>().determinant() < 0;
@@ -109,6 +124,7 @@ class SceneFlattener {
   }
 
   const aiScene& scene_;
+  const fs::path dir_;
   std::map<unsigned, MeshPart> parts_;  ///< by material index
 };
 
@@ -139,13 +155,18 @@ size_t TriangleMesh::vertexCount() const {
 
 TriangleMesh importMeshFile(const std::string& path) {
   Assimp::Importer importer;
+  // Gazebo Classic reads COLLADA with its own loader, which applies <unit> and ignores
+  // <up_axis> (gazebo-classic issue 1305): vertices are taken as written, Z up. assimp
+  // applies <unit> too, and with this flag leaves the axes alone.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  // Only positions and materials are used: without normals and texture coordinates the
-  // corners that faces share become one vertex (smaller hulls, less to transform).
+  // Positions, materials and texture coordinates are used: without normals the corners
+  // that faces share become one vertex (smaller hulls, less to transform), unless their
+  // texture coordinates differ.
   importer.SetPropertyInteger(
       AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
-                                  aiComponent_COLORS | aiComponent_TEXCOORDS |
+                                  aiComponent_COLORS |
                                   aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
                                   aiComponent_TEXTURES | aiComponent_LIGHTS |
                                   aiComponent_CAMERAS);
@@ -157,7 +178,7 @@ TriangleMesh importMeshFile(const std::string& path) {
   }
   TriangleMesh mesh;
   mesh.path = path;
-  mesh.parts = SceneFlattener(*scene).flatten();
+  mesh.parts = SceneFlattener(*scene, fs::path(path).parent_path()).flatten();
   if (mesh.parts.empty()) throw LoadError(path + ": mesh has no triangles");
   return mesh;
 }

@@ -16,6 +16,7 @@
 #include "robot_plan.h"
 #include "sdf_util.h"
 #include "urdf_checks.h"
+#include "visual_appearance.h"
 
 namespace bullet_sim {
 namespace {
@@ -57,7 +58,10 @@ class SdfModelConverter {
  public:
   SdfModelConverter(const sdf::Model& model, const std::string& source,
                     const UriResolver& resolver)
-      : model_(model), where_(source + ": model '" + model.Name() + "'"), resolver_(resolver) {}
+      : model_(model),
+        source_(source),
+        where_(source + ": model '" + model.Name() + "'"),
+        resolver_(resolver) {}
 
   RobotSpec convert() {
     collect(model_, "", Isometry3d::Identity());
@@ -85,7 +89,16 @@ class SdfModelConverter {
     spec_.root_link_in_model = toPose3(link(root).T_model_link);
     std::vector<urdf::LinkSharedPtr> links;
     urdf_->getLinks(links);
-    for (const urdf::LinkSharedPtr& l : links) addLinkVisuals(*l, &spec_);
+    for (const urdf::LinkSharedPtr& l : links) {
+      size_t next = spec_.visuals.size();
+      addLinkVisuals(*l, &spec_);
+      for (const urdf::VisualSharedPtr& v : l->visual_array) {  // as addLinkVisuals walks them
+        if (!v || !v->geometry) continue;
+        const auto texture = textures_.find(v.get());
+        if (texture != textures_.end()) spec_.visuals[next].texture = texture->second;
+        ++next;
+      }
+    }
     // Mesh file names were resolved from the SDF file's folder above.
     loadRobotMeshes(resolver_, "", where_, &spec_);
     warnAboutPlugins(model_);
@@ -269,7 +282,9 @@ class SdfModelConverter {
       vis->name = v.Name();
       vis->origin = toUrdf(toIso(poseInParent(v)));
       vis->geometry = geometry(*v.Geom(), vwhere);
-      const Eigen::Vector4f rgba = visualColour(v, vwhere, &spec_.warnings);
+      const Appearance look = visualAppearance(v, vwhere, source_, resolver_, &spec_.warnings);
+      const Eigen::Vector4f& rgba = look.rgba;
+      if (!look.texture.path.empty()) textures_[vis.get()] = look.texture;
       vis->material = std::make_shared<urdf::Material>();
       vis->material->color.r = rgba[0];
       vis->material->color.g = rgba[1];
@@ -328,8 +343,11 @@ class SdfModelConverter {
   }
 
   const sdf::Model& model_;
+  std::string source_;
   std::string where_;
   const UriResolver& resolver_;
+  /// Material script textures of the visuals, until the specs of the visuals exist.
+  std::map<const urdf::Visual*, TextureRef> textures_;
   std::vector<LinkEntry> links_;
   std::vector<JointEntry> joints_;
   urdf::ModelInterfaceSharedPtr urdf_;

@@ -82,8 +82,10 @@ Eigen::Vector4f visualColour(const sdf::Visual& visual, const std::string& where
     return Eigen::Vector4f(0.7f, 0.7f, 0.7f, 1.0f);
   }
   if (const auto colour = gazeboMaterialColour(script)) return *colour;
-  warnings->push_back(where + ": material script '" + script +
-                      "' is not one of Gazebo's stock materials: drawn grey");
+  if (warnings) {
+    warnings->push_back(where + ": material script '" + script +
+                        "' is not one of Gazebo's stock materials: drawn grey");
+  }
   return unknownMaterialColour();
 }
 

@@ -32,7 +32,8 @@ void checkGeometrySize(const sdf::Geometry& geometry, const std::string& where);
 
 /// The colour a visual is drawn with, as Gazebo shows it: an explicit <diffuse> wins over a
 /// <script> material name, which wins over an <ambient>, then the default grey. An unknown
-/// script name adds a warning naming it (`where` says whose visual it is).
+/// script name adds a warning naming it (`where` says whose visual it is; none when
+/// `warnings` is null). visual_appearance.h adds the scripts of the visual's own files.
 Eigen::Vector4f visualColour(const sdf::Visual& visual, const std::string& where,
                              std::vector<std::string>* warnings);
 

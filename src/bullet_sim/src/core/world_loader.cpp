@@ -6,6 +6,7 @@
 #include "bullet_sim/mesh.h"
 #include "bullet_sim/world_spec.h"
 #include "description_geometry.h"
+#include "visual_appearance.h"
 #include "robot_plan.h"
 #include "sdf_document.h"
 #include "sdf_model.h"
@@ -139,17 +140,21 @@ class WorldReader {
       const sdf::Collision& col = *link.CollisionByIndex(c);
       checkGeometrySize(*col.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
                                          "' collision '" + col.Name() + "'");
-      spec->shapes.push_back(shape(model, link, *col.Geom(),
-                                   T_world_link * toIso(poseInParent(col)), true));
+      StaticShape s = shape(model, link, *col.Geom(), T_world_link * toIso(poseInParent(col)), true);
+      if (s.kind == Geometry::Mesh && !s.mesh) continue;  // not found: warned, left out
+      spec->shapes.push_back(std::move(s));
     }
     for (uint64_t v = 0; v < link.VisualCount(); ++v) {
       const sdf::Visual& vis = *link.VisualByIndex(v);
       checkGeometrySize(*vis.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
                                          "' visual '" + vis.Name() + "'");
       StaticShape s = shape(model, link, *vis.Geom(), T_world_link * toIso(poseInParent(vis)), false);
-      s.rgba = visualColour(vis, source_ + ": model '" + model + "' link '" + link.Name() +
-                                     "' visual '" + vis.Name() + "'",
-                            &spec->warnings);
+      const Appearance look = visualAppearance(
+          vis, source_ + ": model '" + model + "' link '" + link.Name() + "' visual '" +
+                   vis.Name() + "'",
+          source_, resolver_, &spec->warnings);
+      s.rgba = look.rgba;
+      s.texture = look.texture;
       mergeVisual(s, spec);
     }
   }
@@ -163,6 +168,7 @@ class WorldReader {
           (s.pose.position - visual.pose.position).norm() < 1e-9 &&
           s.pose.orientation.angularDistance(visual.pose.orientation) < 1e-9) {
         s.rgba = visual.rgba;
+        s.texture = visual.texture;
         return;
       }
     }
@@ -207,8 +213,16 @@ class WorldReader {
                                      : "";
     std::string reason;
     s->mesh = loadMeshUri(resolver_, mesh.Uri(), base_dir, &reason);
-    if (!s->mesh && collides) throw LoadError(where + ": " + reason);
-    if (!s->mesh) mesh_warnings_.push_back(where + ": " + reason + ": not drawn");
+    // Gazebo goes on without a mesh it cannot find (a model of its online database that is
+    // not installed, as turtlebot3_house's mailbox): so does the world, saying so. A file
+    // that is found but cannot be read is an error.
+    if (!s->mesh && collides && reason.rfind("file not found", 0) != 0) {
+      throw LoadError(where + ": " + reason);
+    }
+    if (!s->mesh) {
+      mesh_warnings_.push_back(where + ": " + reason +
+                               (collides ? ": left out (nothing collides with it)" : ": not drawn"));
+    }
     if (!mesh.Submesh().empty()) {
       mesh_warnings_.push_back(where + ": <submesh> '" + mesh.Submesh() +
                                "' is not supported: the whole mesh is used");

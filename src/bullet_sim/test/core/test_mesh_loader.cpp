@@ -1,4 +1,4 @@
-// Mesh files through assimp: STL (binary, ASCII), COLLADA with <unit> and <up_axis>, OBJ
+// Mesh files through assimp: STL (binary, ASCII), COLLADA with <unit> (and <up_axis> ignored), OBJ
 // with MTL colours; the cache; unreadable files. Every file is written by the test.
 #include <algorithm>
 #include <filesystem>
@@ -75,31 +75,36 @@ TEST_F(MeshFiles, BinaryAndAsciiStlCubeComeOutAsWritten) {
   }
 }
 
-TEST_F(MeshFiles, ColladaInCentimetresWithYUpComesOutInMetresWithZUp) {
-  // In the file: 100 cm along x, 50 cm along y (up), 20 cm along z, all from the origin.
-  const auto box = boxTriangles(Vector3d(100, 50, 20), Vector3d(50, 25, 10));
-  bullet_sim_test::writeCollada(file("y_up_cm.dae"), box, 0.01, "Y_UP",
+TEST_F(MeshFiles, ColladaTaggedYUpWithZUpDataStandsAsWrittenInMetres) {
+  // As TurtleBot3's wall.dae: tagged Y_UP, in inches, its data z up. In the file: 100 in
+  // along x, 50 in along y, 200 in high along z, standing on z = 0. Gazebo Classic applies
+  // <unit> and ignores <up_axis> (gazebo-classic issue 1305): 2.54 m x 1.27 m, 5.08 m high.
+  const auto box = boxTriangles(Vector3d(100, 50, 200), Vector3d(50, 25, 100));
+  bullet_sim_test::writeCollada(file("y_up_inch.dae"), box, 0.0254, "Y_UP",
                                 Eigen::Vector4f(0.8f, 0.1f, 0.2f, 1.0f));
-  const TriangleMesh mesh = readMeshFile(file("y_up_cm.dae"));
+  const TriangleMesh mesh = readMeshFile(file("y_up_inch.dae"));
   ASSERT_EQ(mesh.parts.size(), 1u);
   EXPECT_EQ(mesh.triangleCount(), 12u);
-  // Stood up as Gazebo shows it (+90 degrees about x: y -> z, z -> -y), in metres: 1 m long,
-  // 0.5 m high, 0.2 m deep towards -y.
   const Eigen::AlignedBox3d bounds = boundsOf(mesh);
-  EXPECT_TRUE(near(bounds.min(), Vector3d(0, -0.2, 0)));
-  EXPECT_TRUE(near(bounds.max(), Vector3d(1.0, 0, 0.5)));
+  EXPECT_TRUE(near(bounds.min(), Vector3d(0, 0, 0))) << bounds.min().transpose();
+  EXPECT_TRUE(near(bounds.max(), Vector3d(2.54, 1.27, 5.08))) << bounds.max().transpose();
   ASSERT_TRUE(mesh.parts[0].rgba.has_value());
   EXPECT_TRUE(mesh.parts[0].rgba->isApprox(Eigen::Vector4f(0.8f, 0.1f, 0.2f, 1.0f)));
   expectOutwardWinding(mesh);
 }
 
-TEST_F(MeshFiles, ColladaWithZUpKeepsItsAxesAndUnitOneIsMetres) {
-  const auto box = boxTriangles(Vector3d(1, 0.5, 0.2), Vector3d(0.5, 0.25, 0.1));
-  bullet_sim_test::writeCollada(file("z_up_m.dae"), box, 1.0, "Z_UP",
-                                Eigen::Vector4f(0.1f, 0.9f, 0.1f, 1.0f));
-  const Eigen::AlignedBox3d bounds = boundsOf(readMeshFile(file("z_up_m.dae")));
-  EXPECT_TRUE(near(bounds.min(), Vector3d(0, 0, 0)));
-  EXPECT_TRUE(near(bounds.max(), Vector3d(1.0, 0.5, 0.2)));
+TEST_F(MeshFiles, ColladaUpAxisNeverTurnsTheData) {
+  // The same box in centimetres under each tag: the same metres every time.
+  const auto box = boxTriangles(Vector3d(100, 50, 20), Vector3d(50, 25, 10));
+  for (const std::string up : {"X_UP", "Y_UP", "Z_UP"}) {
+    SCOPED_TRACE(up);
+    const std::string name = "box_" + up + ".dae";
+    bullet_sim_test::writeCollada(file(name), box, 0.01, up,
+                                  Eigen::Vector4f(0.1f, 0.9f, 0.1f, 1.0f));
+    const Eigen::AlignedBox3d bounds = boundsOf(readMeshFile(file(name)));
+    EXPECT_TRUE(near(bounds.min(), Vector3d(0, 0, 0))) << bounds.min().transpose();
+    EXPECT_TRUE(near(bounds.max(), Vector3d(1.0, 0.5, 0.2))) << bounds.max().transpose();
+  }
 }
 
 TEST_F(MeshFiles, ObjGivesOnePartPerMaterialWithItsDiffuseColour) {
@@ -179,7 +184,8 @@ TEST(MeshCrashes, ColladaEmptyFloatArrayCrashesAssimpNotTheLoader) {
 
 TEST(MeshCrashes, ATriangleReadInTheChildProcessArrivesWhole) {
   // The wire format carries vertices, triangles and the file's colour (a red lambert,
-  // millimetres, Y up: the corner (1000, 0, 0) mm is (1, 0, 0) m, (0, 1000, 0) is (0, 0, 1)).
+  // millimetres, tagged Y up and read as written: the corner (1000, 0, 0) mm is (1, 0, 0) m,
+  // (0, 1000, 0) is (0, 1, 0)).
   const TriangleMesh mesh =
       readMeshFile(std::string(BULLET_SIM_FIXTURES) + "/mesh_red_triangle.dae");
   ASSERT_EQ(mesh.parts.size(), 1u);
@@ -189,7 +195,7 @@ TEST(MeshCrashes, ATriangleReadInTheChildProcessArrivesWhole) {
   EXPECT_TRUE(part.rgba->isApprox(Eigen::Vector4f(1, 0, 0, 1)));
   EXPECT_TRUE(near(part.vertices[part.triangles[0][0]], Vector3d(0, 0, 0)));
   EXPECT_TRUE(near(part.vertices[part.triangles[0][1]], Vector3d(1, 0, 0)));
-  EXPECT_TRUE(near(part.vertices[part.triangles[0][2]], Vector3d(0, 0, 1)));
+  EXPECT_TRUE(near(part.vertices[part.triangles[0][2]], Vector3d(0, 1, 0)));
 }
 
 TEST_F(MeshFiles, ColladaWithoutTrianglesIsAnError) {

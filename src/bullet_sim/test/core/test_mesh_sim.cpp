@@ -87,10 +87,10 @@ class MeshWorld : public ::testing::Test {
 }  // namespace
 
 TEST_F(MeshWorld, MeshBurgerLidarSeesAMeshWallAndIntoAConcaveMesh) {
-  // Wall: a COLLADA box in centimetres with Y up, 10 cm thick (x), 2 m wide (world y), 1 m
-  // high; placed at x 1.5 its near face is at x 1.45.
+  // Wall: a COLLADA box in centimetres tagged Y_UP but written z up, as Gazebo reads it:
+  // 10 cm thick (x), 2 m wide (y), 1 m high; placed at x 1.5 its near face is at x 1.45.
   bullet_sim_test::writeCollada(dir_ + "/wall.dae",
-                                boxTriangles(Vector3d(10, 100, 200), Vector3d(0, 50, 0)), 0.01,
+                                boxTriangles(Vector3d(10, 200, 100), Vector3d(0, 0, 50)), 0.01,
                                 "Y_UP", Eigen::Vector4f(0.6f, 0.6f, 0.9f, 1));
   // Pocket: a U of three boxes open towards the robot (-y); its back wall's inner face is at
   // y 1.95 + 0 (model at y 0), the mouth at y 1.0. Its convex hull would close the mouth.
@@ -149,12 +149,27 @@ TEST_F(MeshWorld, MeshBurgerDrivesLikeThePrimitiveBurger) {
   EXPECT_NEAR(meshes, primitive, 0.03 * primitive);
 }
 
-TEST_F(MeshWorld, MissingWorldCollisionMeshNamesModelLinkUriAndFolder) {
+TEST_F(MeshWorld, MissingWorldCollisionMeshIsLeftOutWithAWarningNamingModelLinkUriAndFolder) {
+  // As Gazebo, which goes on without a model of its online database that is not installed.
   const std::string path =
       writeWorld(dir_, staticMeshModel("statue", "0 0 0 0 0 0", "missing.stl", "missing.stl"));
-  EXPECT_EQ(loadErrorOf([&] { loadWorldFile(path, plainResolver()); }),
-            path + ": model 'statue' link 'link' collision mesh 'missing.stl': file not found "
-                   "(searched " + dir_ + ")");
+  const WorldSpec world = loadWorldFile(path, plainResolver());
+  EXPECT_TRUE(hasWarning(world.warnings, path + ": model 'statue' link 'link' collision mesh "
+                                                "'missing.stl': file not found (searched " +
+                                                dir_ + "): left out (nothing collides with it)"));
+  for (const StaticShape& s : world.shapes) EXPECT_FALSE(s.model == "statue" && s.collides);
+}
+
+TEST_F(MeshWorld, UnreadableWorldCollisionMeshStopsTheLoad) {
+  bullet_sim_test::writeText(dir_ + "/broken.stl", "solid? no: garbage\n");
+  const std::string path =
+      writeWorld(dir_, staticMeshModel("statue", "0 0 0 0 0 0", "broken.stl", "broken.stl"));
+  const std::string error = loadErrorOf([&] { loadWorldFile(path, plainResolver()); });
+  EXPECT_EQ(error.rfind(path + ": model 'statue' link 'link' collision mesh 'broken.stl': " +
+                            dir_ + "/broken.stl: cannot read mesh",
+                        0),
+            0u)
+      << error;
 }
 
 TEST_F(MeshWorld, MissingWorldVisualMeshIsAWarning) {

@@ -283,7 +283,8 @@ TEST(WorldMaterials, UnknownScriptIsNamedInAWarningAndDrawnGrey) {
   ASSERT_EQ(world.warnings.size(), 1u);
   EXPECT_EQ(world.warnings[0], path + ": model 'pillar' link 'link' visual 'visual': material "
                                       "script 'Custom/Marble' is not one of Gazebo's stock "
-                                      "materials: drawn grey");
+                                      "materials nor in any script of its <uri>s or "
+                                      "GAZEBO_RESOURCE_PATH: drawn grey");
   EXPECT_TRUE(shapeOf(world, "pillar", false)->rgba.isApprox(Eigen::Vector4f(0.7f, 0.7f, 0.7f, 1)));
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "sim_render/geometry.h"
+#include "sim_render/texture.h"
 
 #include <Eigen/Core>
 
@@ -19,6 +20,8 @@ struct Mesh {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<Eigen::Vector3d> face_normals;
+  /// Texture coordinates, one per vertex, or none (the shape is then drawn in flat colour).
+  std::vector<Eigen::Vector2f> uvs;
   /// Radius of a sphere about the local origin that holds every vertex.
   double bounding_radius_m = 0;
 };
@@ -29,8 +32,18 @@ struct Mesh {
 /// vertices and triangles; normals and radius are recomputed) scaled by `size` per axis, seen
 /// from the side its triangles wind counter-clockwise; its `mesh_uri` is not read here.
 /// Colours are linear 0..1; alpha is carried but surfaces are drawn opaque.
+///
+/// With a `texture`, each pixel is the texel times `rgba` (OGRE's default modulation: keep
+/// `rgba` white for the texture's own colours), lit as a flat surface is. Texture
+/// coordinates are Gazebo Classic's: a box gets the whole image on each face (its
+/// MeshManager "unit_box"), a finite plane the whole image once, +x to the right and +y up
+/// (its "unit_plane"), a mesh the coordinates of its file (Mesh::uvs, through
+/// `uv_transform`). Cylinders, spheres, infinite planes and meshes without coordinates are
+/// drawn in `rgba` times the texture's mean colour.
 struct ShapeSpec : Geometry {
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  std::shared_ptr<const Texture> texture;
+  UvTransform uv_transform;
   /// Mesh only, shared between shapes. (Named with its namespace: in here `Mesh` is the
   /// inherited Geometry::Mesh kind.)
   std::shared_ptr<const sim_render::Mesh> triangles;
