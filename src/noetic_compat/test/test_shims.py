@@ -62,7 +62,7 @@ class TestShims(unittest.TestCase):
     def test_the_env_hook_hands_cmake_the_toolchain(self):
         hook = bash('source %s && echo "$CMAKE_TOOLCHAIN_FILE"' % self.underlay)
         toolchain = hook.stdout.strip()
-        self.assertTrue(toolchain.endswith('/share/noetic_compat/cmake/noetic_compat_toolchain.cmake'))
+        self.assertTrue(toolchain.endswith('/noetic_compat/cmake/noetic_compat_toolchain.cmake'))
         self.assertTrue(os.path.isfile(toolchain), toolchain)
         mine = bash('export CMAKE_TOOLCHAIN_FILE=/opt/mine.cmake && source %s && '
                     'echo "$CMAKE_TOOLCHAIN_FILE"' % self.underlay)
