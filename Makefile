@@ -4,6 +4,8 @@
 # Debian's ROS Python modules need /usr/bin/python3, so /usr/bin comes first.
 SHELL := /bin/bash
 export PATH := /usr/bin:/bin:/usr/sbin:/sbin:$(PATH)
+# noetic_compat's toolchain (exported by devel/setup.bash) is for overlays, not this build.
+unexport CMAKE_TOOLCHAIN_FILE
 JOBS ?= 2
 CATKIN_MAKE := catkin_make --source . --build build \
 	-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES=""

@@ -1,0 +1,3 @@
+// Noetic's name of <class_loader/class_loader_core.hpp>, which Debian 12 ships under the new name only.
+#pragma once
+#include <class_loader/class_loader_core.hpp>
