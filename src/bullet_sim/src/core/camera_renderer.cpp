@@ -278,7 +278,7 @@ struct CameraRenderer::Impl {
   sim_render::Scene scene;
   std::map<std::string, RobotScene> robots;
   std::vector<std::string> warnings;
-  ShapeSources sources{MeshTriangles(), TextureImages(&warnings)};
+  ShapeSources sources{MeshTriangles(), TextureImages(&warnings), {}};
   std::vector<LinkPose> camera_robot_poses, other_poses;
   std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
 };
