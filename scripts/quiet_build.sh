@@ -1,11 +1,11 @@
 #!/bin/bash
-# Runs a build command, showing only progress headlines, warnings and errors;
+# Runs a build command, showing only progress headlines, a line as each package starts
+# compiling, warnings and errors, and each package's time at the end (build_progress.py);
 # the full output goes to build/build.log. Exits with the command's status and,
 # on failure, shows the log's last lines.
 set -o pipefail
 mkdir -p build
-"$@" 2>&1 | tee build/build.log | grep --line-buffered -E \
-  '(^#### |^-- ~~ +[a-z]|: (error|warning):|^make.*Error|\*\*\*)'
+"$@" 2>&1 | tee build/build.log | /usr/bin/python3 -u "$(dirname "$0")/build_progress.py"
 status=${PIPESTATUS[0]}
 if (( status != 0 )); then
   echo "build failed (exit $status); last lines of build/build.log:"

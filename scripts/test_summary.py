@@ -18,6 +18,25 @@ def case_problem(case):
     return None
 
 
+def count_file(path):
+    """{'passed', 'failed', 'skipped'} of one result file; an unreadable one counts as one
+    failure."""
+    counts = {'passed': 0, 'failed': 0, 'skipped': 0}
+    try:
+        cases = list(ET.parse(path).getroot().iter('testcase'))
+    except (ET.ParseError, OSError):
+        counts['failed'] = 1
+        return counts
+    for case in cases:
+        if case_problem(case) is not None:
+            counts['failed'] += 1
+        elif case.find('skipped') is not None:
+            counts['skipped'] += 1
+        else:
+            counts['passed'] += 1
+    return counts
+
+
 def summarize(results_dir):
     totals = {'passed': 0, 'failed': 0, 'skipped': 0}
     lines, problems = [], []

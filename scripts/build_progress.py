@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Reads catkin_make's output on stdin and says where the build is: a line when a package
+starts compiling and, at the end, each package's time from its first compile line to its
+last target built (packages build in parallel with -j2, so the times overlap). Warnings, errors
+and catkin's headlines pass through as they come."""
+import re
+import sys
+import time
+
+PASS_THROUGH = re.compile(r'(^#### |^-- ~~ +[a-z]|: (error|warning):|^make.*Error|\*\*\*)')
+PACKAGE_WORK = re.compile(r'(Building \w+ object|Linking \w+ \w+ library|Linking \w+ executable'
+                          r'|Generating) .*?src/([A-Za-z0-9_]+)/')
+TARGET_OF = re.compile(r'src/([A-Za-z0-9_]+)/CMakeFiles/([A-Za-z0-9_.+-]+)\.dir/')
+BUILT = re.compile(r'Built target (\S+)')
+
+
+class Progress:
+    def __init__(self, out, clock=time.monotonic):
+        self.out, self.clock = out, clock
+        self.start = clock()
+        self.spans = {}  # package -> [first, last] seconds since start
+        self.package_of = {}  # make target -> package, learnt from its object files
+
+    def stamp(self, seconds):
+        return '[%2d:%02d]' % (seconds // 60, seconds % 60)
+
+    def line(self, text):
+        now = self.clock() - self.start
+        if PASS_THROUGH.search(text):
+            self.out.write(text if text.endswith('\n') else text + '\n')
+        target = TARGET_OF.search(text)
+        if target:
+            self.package_of[target.group(2)] = target.group(1)
+        built = BUILT.search(text)
+        if built and built.group(1) in self.package_of:
+            self.spans[self.package_of[built.group(1)]][1] = now
+            return
+        match = PACKAGE_WORK.search(text)
+        if not match:
+            return
+        package = match.group(2)
+        if package not in self.spans:
+            self.spans[package] = [now, now]
+            self.out.write('%s building %s\n' % (self.stamp(now), package))
+        self.spans[package][1] = now
+        self.out.flush()
+
+    def summary(self):
+        total = self.clock() - self.start
+        lines = ['%s build done; compile and link time per package:' % self.stamp(total)]
+        for package, (first, last) in sorted(self.spans.items(), key=lambda kv: kv[1][0]):
+            lines.append('  %-28s %6.1f s  (%s .. %s)' % (package, last - first, self.stamp(first),
+                                                         self.stamp(last)))
+        return '\n'.join(lines) + '\n'
+
+
+def main():
+    progress = Progress(sys.stdout)
+    for text in sys.stdin:
+        progress.line(text)
+    if progress.spans:
+        sys.stdout.write(progress.summary())
+
+
+if __name__ == '__main__':
+    main()

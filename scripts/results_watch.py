@@ -1,0 +1,72 @@
+#!/usr/bin/python3
+"""Watches a test-results folder while the tests run: a line per result file as it appears
+(its counts, and the time since the previous one: the test's own run time, with catkin's
+building of it), and at the end the ten slowest. Stops when the file named by --stop exists
+(the test run writes it when done)."""
+import argparse
+import glob
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from test_summary import count_file  # noqa: E402
+
+
+class Watcher:
+    def __init__(self, results_dir, out, clock=time.monotonic, wall_clock=time.time):
+        self.results_dir, self.out, self.clock, self.wall_clock = results_dir, out, clock, wall_clock
+        self.start = self.last = clock()
+        self.seen = set()
+        self.durations = []  # (seconds, name)
+
+    def poll(self):
+        paths = sorted(glob.glob(os.path.join(self.results_dir, '**', '*.xml'), recursive=True),
+                       key=lambda p: os.path.getmtime(p) if os.path.exists(p) else 0)
+        for path in paths:
+            # A file still being written (modified in the last second) waits for the next poll.
+            if path in self.seen or not self.settled(path):
+                continue
+            self.seen.add(path)
+            now = self.clock()
+            name = os.path.relpath(path, self.results_dir)
+            counts = count_file(path)
+            seconds = now - self.last
+            self.last = now
+            self.durations.append((seconds, name))
+            total = now - self.start
+            status = 'FAIL' if counts['failed'] else 'ok  '
+            self.out.write('[%2d:%02d] %s %s: %d passed, %d failed, %d skipped (%.0f s)\n' % (
+                total // 60, total % 60, status, name, counts['passed'], counts['failed'],
+                counts['skipped'], seconds))
+            self.out.flush()
+
+    def settled(self, path):
+        try:
+            return self.wall_clock() - os.path.getmtime(path) >= 1.0
+        except OSError:
+            return False
+
+    def slowest(self, n=10):
+        lines = ['slowest %d result files (seconds since the one before):' % n]
+        for seconds, name in sorted(self.durations, reverse=True)[:n]:
+            lines.append('  %6.0f s  %s' % (seconds, name))
+        return '\n'.join(lines) + '\n'
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument('results_dir')
+    parser.add_argument('--stop', required=True, help='stop once this file exists')
+    parser.add_argument('--period', type=float, default=2.0)
+    args = parser.parse_args()
+    watcher = Watcher(args.results_dir, sys.stdout)
+    while not os.path.exists(args.stop):
+        watcher.poll()
+        time.sleep(args.period)
+    watcher.poll()
+    sys.stdout.write(watcher.slowest())
+
+
+if __name__ == '__main__':
+    main()

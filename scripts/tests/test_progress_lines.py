@@ -1,0 +1,84 @@
+"""The lines `make build` and `make test` print while they run (build_progress.py,
+results_watch.py), fed with made-up output and result files and a hand-driven clock."""
+import io
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import build_progress  # noqa: E402
+import results_watch  # noqa: E402
+
+
+class Clock:
+    def __init__(self):
+        self.now = 0.0
+
+    def __call__(self):
+        return self.now
+
+
+def test_a_line_when_a_package_starts_and_its_span_at_the_end():
+    clock, out = Clock(), io.StringIO()
+    progress = build_progress.Progress(out, clock)
+    clock.now = 5
+    progress.line('[  3%] Building CXX object src/sim_render/CMakeFiles/sim_render.dir/src/a.cpp.o\n')
+    clock.now = 65
+    progress.line('[ 40%] Building CXX object src/bullet_sim/CMakeFiles/core.dir/src/b.cpp.o\n')
+    clock.now = 70
+    progress.line('[ 41%] Linking CXX shared library /ws/devel/lib/libsim_render.so src/sim_render/x\n')
+    progress.line('/ws/src/bullet_sim/src/b.cpp:3:1: warning: unused variable\n')
+    clock.now = 80
+    progress.line('[ 42%] Built target sim_render\n')  # the end of sim_render's span
+    progress.line('[ 43%] Built target some_other_target\n')  # not one of ours: nothing
+    clock.now = 200
+    progress.line('[ 99%] Linking CXX executable /ws/devel/lib/bullet_sim/node src/bullet_sim/y\n')
+    lines = out.getvalue().splitlines()
+    assert lines == ['[ 0:05] building sim_render', '[ 1:05] building bullet_sim',
+                     '/ws/src/bullet_sim/src/b.cpp:3:1: warning: unused variable']
+    summary = progress.summary().splitlines()
+    assert summary[0] == '[ 3:20] build done; compile and link time per package:'
+    assert summary[1].split()[:3] == ['sim_render', '75.0', 's']
+    assert summary[2].split()[:3] == ['bullet_sim', '135.0', 's']
+
+
+def write_result(folder, name, passed, failed):
+    cases = ''.join('<testcase classname="c" name="p%d"/>' % i for i in range(passed))
+    cases += ''.join('<testcase classname="c" name="f%d"><failure message="no"/></testcase>' % i
+                     for i in range(failed))
+    path = os.path.join(folder, name)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, 'w') as f:
+        f.write('<testsuite>%s</testsuite>' % cases)
+    os.utime(path, (1000, 1000))
+    return path
+
+
+def test_a_line_per_result_file_and_the_slowest_at_the_end():
+    folder = tempfile.mkdtemp()
+    clock, out = Clock(), io.StringIO()
+    watcher = results_watch.Watcher(folder, out, clock, wall_clock=lambda: 2000.0)
+    clock.now = 30
+    write_result(folder, 'pkg_a/gtest-a.xml', 3, 0)
+    watcher.poll()
+    clock.now = 130
+    write_result(folder, 'pkg_b/rostest-b.xml', 1, 1)
+    watcher.poll()
+    watcher.poll()  # nothing new: nothing printed
+    lines = out.getvalue().splitlines()
+    assert lines == ['[ 0:30] ok   pkg_a/gtest-a.xml: 3 passed, 0 failed, 0 skipped (30 s)',
+                     '[ 2:10] FAIL pkg_b/rostest-b.xml: 1 passed, 1 failed, 0 skipped (100 s)']
+    assert watcher.slowest(1).splitlines() == ['slowest 1 result files (seconds since the one before):',
+                                               '     100 s  pkg_b/rostest-b.xml']
+
+
+def test_a_file_still_being_written_waits_for_the_next_poll():
+    folder = tempfile.mkdtemp()
+    out = io.StringIO()
+    watcher = results_watch.Watcher(folder, out, Clock(), wall_clock=lambda: 1000.5)
+    write_result(folder, 'pkg/gtest.xml', 1, 0)  # modified at 1000: half a second ago
+    watcher.poll()
+    assert out.getvalue() == ''
+    watcher.wall_clock = lambda: 1002.0
+    watcher.poll()
+    assert 'pkg/gtest.xml: 1 passed' in out.getvalue()
