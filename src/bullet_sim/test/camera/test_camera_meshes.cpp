@@ -7,6 +7,7 @@
 
 #include "../core/burger.h"
 #include "../core/mesh_fixtures.h"
+#include "burger_camera.h"
 #include "bullet_sim/camera_renderer.h"
 #include "bullet_sim/simulation.h"
 
@@ -16,27 +17,13 @@ using namespace bullet_sim;
 using bullet_sim_test::boxTriangles;
 using Eigen::Vector3d;
 
-constexpr int kWidth = 640, kHeight = 480;
-// Camera of the Burger at the origin, yaw 0: base_footprint -> base_link 0.010 up,
-// base_link -> camera_link (0.02, 0, 0.295); hfov 1.5707.
-const Vector3d kCamera(0.02, 0, 0.305);
-const double kFocal = (kWidth / 2.0) / std::tan(1.5707 / 2.0);
-// The world has no light of its own: default ambient 0.4, and the default light comes from
-// above and behind +x, so faces turned towards -x get the ambient only.
-constexpr double kAmbient = 0.4;
-
-struct Rgb {
-  int r, g, b;
-  bool operator==(const Rgb& o) const { return r == o.r && g == o.g && b == o.b; }
-};
-std::ostream& operator<<(std::ostream& out, const Rgb& p) {
-  return out << "(" << p.r << ", " << p.g << ", " << p.b << ")";
-}
-
-Rgb pixel(const ImageData& image, int col, int row) {
-  const size_t i = static_cast<size_t>(row) * image.step + 3 * static_cast<size_t>(col);
-  return {image.data[i], image.data[i + 1], image.data[i + 2]};
-}
+using bullet_sim_test::kAmbient;
+using bullet_sim_test::kCamera;
+using bullet_sim_test::kFocal;
+using bullet_sim_test::kHeight;
+using bullet_sim_test::kWidth;
+using bullet_sim_test::pixel;
+using bullet_sim_test::Rgb;
 
 /// A colour under the ambient light only, as bytes.
 Rgb ambientOnly(double r, double g, double b) {

@@ -12,6 +12,7 @@
 
 #include "../core/burger.h"
 #include "../core/mesh_fixtures.h"
+#include "burger_camera.h"
 #include "bullet_sim/camera_renderer.h"
 #include "bullet_sim/simulation.h"
 #include "bullet_sim/world_markers.h"
@@ -22,20 +23,12 @@ namespace {
 using namespace bullet_sim;
 using Eigen::Vector3d;
 
-constexpr int kWidth = 640, kHeight = 480;
-// The Burger's camera at the origin, yaw 0 (see test_camera_meshes.cpp).
-const Vector3d kCamera(0.02, 0, 0.305);
-const double kFocal = (kWidth / 2.0) / std::tan(1.5707 / 2.0);
-// No light in the world: faces turned towards -x get the default ambient 0.4 only.
-constexpr double kAmbient = 0.4;
-
-struct Rgb {
-  int r, g, b;
-  bool operator==(const Rgb& o) const { return r == o.r && g == o.g && b == o.b; }
-};
-std::ostream& operator<<(std::ostream& out, const Rgb& p) {
-  return out << "(" << p.r << ", " << p.g << ", " << p.b << ")";
-}
+using bullet_sim_test::kAmbient;
+using bullet_sim_test::kCamera;
+using bullet_sim_test::kFocal;
+using bullet_sim_test::kHeight;
+using bullet_sim_test::kWidth;
+using bullet_sim_test::Rgb;
 
 /// The pixel where the world point (x, y, z) projects (the camera looks along +x).
 Rgb seen(const ImageData& image, double x, double y, double z) {
@@ -109,6 +102,22 @@ class TextureCamera : public ::testing::Test {
         "sign world", UriResolver(ResourcePaths{{dir_}, {}}));
   }
 
+  /// A 0.6 m OBJ square facing -x at x 1.5, camera height, its material `mtl` (MTL lines),
+  /// its texture coordinates u from 0 to `u_right` (v 0 at the bottom corners, 1 at the top).
+  WorldSpec panelWorld(const std::string& mtl, const std::string& u_right) {
+    writeText(dir_ + "/panel.mtl", "newmtl painted\n" + mtl + "\n");
+    writeText(dir_ + "/panel.obj",
+              "mtllib panel.mtl\nusemtl painted\n"
+              "v 0 0.3 -0.3\nv 0 -0.3 -0.3\nv 0 -0.3 0.3\nv 0 0.3 0.3\n"
+              "vt 0 0\nvt " + u_right + " 0\nvt " + u_right + " 1\nvt 0 1\n"
+              "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+    return loadWorldString(
+        "<sdf version='1.6'><world name='w'><model name='panel'><static>true</static>"
+        "<pose>1.5 0 0.305 0 0 0</pose><link name='l'><visual name='v'><geometry><mesh><uri>" +
+            dir_ + "/panel.obj</uri></mesh></geometry></visual></link></model></world></sdf>",
+        "panel world", UriResolver(ResourcePaths{}));
+  }
+
   const std::string dir_ = bullet_sim_test::makeTempDir();
 };
 
@@ -166,17 +175,7 @@ TEST_F(TextureCamera, AnObjMeshShowsItsTextureAtItsCoordinates) {
   // A 0.6 m square facing -x at x 1.5 whose coordinates show the image's left column only
   // (u 0..0.5): red in its top half, blue in its bottom half, whatever side.
   writeQuadrants(dir_ + "/paint.png");
-  writeText(dir_ + "/panel.mtl", "newmtl painted\nKd 1 1 1\nmap_Kd paint.png\n");
-  writeText(dir_ + "/panel.obj",
-            "mtllib panel.mtl\nusemtl painted\n"
-            "v 0 0.3 -0.3\nv 0 -0.3 -0.3\nv 0 -0.3 0.3\nv 0 0.3 0.3\n"
-            "vt 0 0\nvt 0.5 0\nvt 0.5 1\nvt 0 1\n"
-            "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
-  const WorldSpec world = loadWorldString(
-      "<sdf version='1.6'><world name='w'><model name='panel'><static>true</static>"
-      "<pose>1.5 0 0.305 0 0 0</pose><link name='l'><visual name='v'><geometry><mesh><uri>" +
-          dir_ + "/panel.obj</uri></mesh></geometry></visual></link></model></world></sdf>",
-      "panel world", UriResolver(ResourcePaths{}));
+  const WorldSpec world = panelWorld("Kd 1 1 1\nmap_Kd paint.png", "0.5");
   std::vector<std::string> warnings;
   const ImageData image = render(world, &warnings);
   EXPECT_TRUE(warnings.empty());
@@ -187,16 +186,7 @@ TEST_F(TextureCamera, AnObjMeshShowsItsTextureAtItsCoordinates) {
 }
 
 TEST_F(TextureCamera, AMeshWhoseTextureIsMissingIsNamedOnce) {
-  writeText(dir_ + "/panel.mtl", "newmtl painted\nKd 0 1 0\nmap_Kd nowhere.png\n");
-  writeText(dir_ + "/panel.obj",
-            "mtllib panel.mtl\nusemtl painted\n"
-            "v 0 0.3 -0.3\nv 0 -0.3 -0.3\nv 0 -0.3 0.3\nv 0 0.3 0.3\n"
-            "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
-  const WorldSpec world = loadWorldString(
-      "<sdf version='1.6'><world name='w'><model name='panel'><static>true</static>"
-      "<pose>1.5 0 0.305 0 0 0</pose><link name='l'><visual name='v'><geometry><mesh><uri>" +
-          dir_ + "/panel.obj</uri></mesh></geometry></visual></link></model></world></sdf>",
-      "panel world", UriResolver(ResourcePaths{}));
+  const WorldSpec world = panelWorld("Kd 0 1 0\nmap_Kd nowhere.png", "1");
   std::vector<std::string> warnings;
   const ImageData image = render(world, &warnings);
   ASSERT_EQ(warnings.size(), 1u);
