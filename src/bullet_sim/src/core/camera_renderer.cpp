@@ -35,6 +35,17 @@ sim_render::CameraModel cameraModel(const CameraSpec& camera) {
   return model;
 }
 
+/// A wide-angle camera's lens maps its hfov and its cube faces can be rendered.
+void validateLens(const CameraSpec& camera) {
+  if (camera.depth) throw std::invalid_argument("a wide-angle camera has no depth");
+  CameraLens(*camera.lens, camera.horizontal_fov_rad);
+  const int size = camera.lens->env_texture_size;
+  if (!(size >= 4 && size <= 2048)) {
+    throw std::invalid_argument("<lens> <env_texture_size>: " + std::to_string(size) +
+                                " is not a pixel count in 4..2048");
+  }
+}
+
 /// World pose of `link` among `poses`; `hint` remembers where it was last time, since the
 /// simulation lists the links in the same order on every call.
 const Pose3* findLink(const std::vector<LinkPose>& poses, const std::string& link, size_t* hint) {
@@ -170,8 +181,7 @@ std::string imageEncoding(const CameraSpec& camera) {
 void validateCamera(const CameraSpec& camera) {
   try {
     cameraModel(camera).validate();
-    if (camera.lens && camera.depth) throw std::invalid_argument("a wide-angle camera has no depth");
-    if (camera.lens) LensCamera{camera};
+    if (camera.lens) validateLens(camera);
   } catch (const std::invalid_argument& e) {
     throw LoadError(cameraName(camera) + ": " + e.what());
   }

@@ -12,6 +12,7 @@
 
 #include "../../src/core/lens_camera.h"
 #include "bullet_sim/camera_renderer.h"
+#include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 #include "wide_angle_fixture.h"
 
@@ -203,6 +204,24 @@ TEST(WideAngleCamera, OnlyTheCubeFacesTheLensSeesAreRendered) {
   // Cut off at 40 degrees: the forward face alone.
   camera.lens->cutoff_angle_rad = 40 * kDeg;
   EXPECT_EQ(bullet_sim::LensCamera(camera).facesRendered(), 1);
+}
+
+TEST(WideAngleCamera, AHandMadeBadLensIsRefusedNamingTheCameraAndTheValue) {
+  bullet_sim::CameraSpec camera =
+      bullet_sim::parseRobot(wideAngleFixtureWith(), "wide_angle_robot.urdf").cameras.at(0);
+  EXPECT_NO_THROW(bullet_sim::validateCamera(camera));
+  camera.lens->env_texture_size = 3;
+  try {
+    bullet_sim::validateCamera(camera);
+    ADD_FAILURE() << "no error";
+  } catch (const bullet_sim::LoadError& e) {
+    EXPECT_STREQ(e.what(), "camera 'camera' on link 'camera_link': <lens> <env_texture_size>: 3 "
+                           "is not a pixel count in 4..2048");
+  }
+  camera.lens->env_texture_size = 256;
+  camera.lens->fun = "cos";
+  camera.lens->type = "custom";
+  EXPECT_THROW(bullet_sim::validateCamera(camera), bullet_sim::LoadError);
 }
 
 TEST(WideAngleCamera, FrameTimeOfTheAutoraceCamera) {
