@@ -61,7 +61,8 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 /// visuals to their current link poses and rasterizes. Every robot is drawn, including
 /// the one carrying the camera (a camera inside its own housing does not see it: faces are
 /// single-sided). Mesh visuals are drawn part by part, each part in its own material
-/// colour or else the visual's.
+/// colour or else the visual's. A wide-angle camera (CameraSpec::lens) is drawn through a
+/// cube map of pinhole faces remapped by its lens (src/core/lens_camera.h).
 /// Not thread-safe.
 class CameraRenderer {
  public:
