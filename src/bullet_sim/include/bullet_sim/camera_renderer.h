@@ -46,7 +46,10 @@ std::string imageEncoding(const CameraSpec& camera);
 void validateCamera(const CameraSpec& camera);
 
 /// camera_info of a camera: fx = fy = (width / 2) / tan(hfov / 2), cx = width / 2,
-/// cy = height / 2, stamped `time_s`, frame_id the plugin's frameName.
+/// cy = height / 2, stamped `time_s`, frame_id the plugin's frameName. For a wide-angle
+/// camera fx = fy is the focal length of the pinhole that matches the lens near its axis,
+/// (width / 2) * c1 * f * fun'(c3) / c2 (Gazebo's plugin would publish the pinhole formula
+/// above, which is negative beyond hfov = pi).
 CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 
 /// Renders the cameras of a Simulation's robots on the CPU (no display, no GPU).
@@ -58,7 +61,8 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 /// visuals to their current link poses and rasterizes. Every robot is drawn, including
 /// the one carrying the camera (a camera inside its own housing does not see it: faces are
 /// single-sided). Mesh visuals are drawn part by part, each part in its own material
-/// colour or else the visual's.
+/// colour or else the visual's. A wide-angle camera (CameraSpec::lens) is drawn through a
+/// cube map of pinhole faces remapped by its lens (src/core/lens_camera.h).
 /// Not thread-safe.
 class CameraRenderer {
  public:

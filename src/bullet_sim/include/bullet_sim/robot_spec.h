@@ -53,6 +53,19 @@ struct DepthSpec {
   double cutoff_max_m = 5.0;
 };
 
+/// The <lens> of a <sensor type="wideanglecamera"> (SDF's defaults): the image radius r of a
+/// ray at angle theta from the optical axis is r = c1 * f * fun(theta / c2 + c3), r in units
+/// of the image's half width. A named `type` fixes c1, c2, c3 and fun (see camera_lens.h);
+/// "custom" takes them from <custom_function>.
+struct LensSpec {
+  std::string type = "stereographic";
+  double c1 = 1, c2 = 1, c3 = 0, f = 1;
+  std::string fun = "tan";  ///< "sin", "tan" or "id"
+  bool scale_to_hfov = true;  ///< f chosen so that r = 1 at theta = hfov / 2
+  double cutoff_angle_rad = 1.5707;  ///< rays further from the axis are black
+  int env_texture_size = 256;  ///< pixels along each side of a cube-map face
+};
+
 /// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin, or a
 /// <sensor type="depth">, whose colour image and camera_info are those of a camera (under
 /// Gazebo's depth plugins' defaults ir/image_raw and ir/camera_info) and `depth` the rest.
@@ -64,6 +77,7 @@ struct CameraSpec {
   int width = 320, height = 240;
   std::string format = "R8G8B8";
   std::optional<DepthSpec> depth;  ///< set for a depth camera
+  std::optional<LensSpec> lens;    ///< set for a wide-angle camera (hfov up to 2 pi)
 };
 
 /// Where the diff drive's odometry comes from (<odometrySource>).

@@ -12,6 +12,8 @@
 
 #include "bullet_sim/depth_camera.h"
 #include "bullet_sim/errors.h"
+#include "camera_lens.h"
+#include "lens_camera.h"
 #include "robot_plan.h"
 
 namespace bullet_sim {
@@ -21,14 +23,27 @@ std::string cameraName(const CameraSpec& camera) {
   return "camera '" + camera.name + "' on link '" + camera.link + "'";
 }
 
+/// The pinhole model of a camera; for a wide-angle one, a pinhole with the same image and
+/// clip distances, the lens's focal length set by the caller.
 sim_render::CameraModel cameraModel(const CameraSpec& camera) {
   sim_render::CameraModel model;
   model.width = camera.width;
   model.height = camera.height;
-  model.horizontal_fov_rad = camera.horizontal_fov_rad;
+  model.horizontal_fov_rad = camera.lens ? M_PI_2 : camera.horizontal_fov_rad;
   model.clip_near_m = camera.clip_near_m;
   model.clip_far_m = camera.clip_far_m;
   return model;
+}
+
+/// A wide-angle camera's lens maps its hfov and its cube faces can be rendered.
+void validateLens(const CameraSpec& camera) {
+  if (camera.depth) throw std::invalid_argument("a wide-angle camera has no depth");
+  CameraLens(*camera.lens, camera.horizontal_fov_rad);
+  const int size = camera.lens->env_texture_size;
+  if (!(size >= 4 && size <= 2048)) {
+    throw std::invalid_argument("<lens> <env_texture_size>: " + std::to_string(size) +
+                                " is not a pixel count in 4..2048");
+  }
 }
 
 /// World pose of `link` among `poses`; `hint` remembers where it was last time, since the
@@ -166,6 +181,7 @@ std::string imageEncoding(const CameraSpec& camera) {
 void validateCamera(const CameraSpec& camera) {
   try {
     cameraModel(camera).validate();
+    if (camera.lens) validateLens(camera);
   } catch (const std::invalid_argument& e) {
     throw LoadError(cameraName(camera) + ": " + e.what());
   }
@@ -181,6 +197,11 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s) {
   info.height = camera.height;
   info.K = model.K();
   info.P = model.P();
+  if (camera.lens) {
+    const double f_px = CameraLens(*camera.lens, camera.horizontal_fov_rad).paraxialFocalPx(
+        camera.width);
+    info.K[0] = info.K[4] = info.P[0] = info.P[5] = f_px;
+  }
   return info;
 }
 
@@ -196,6 +217,7 @@ struct CameraRenderer::Impl {
     int spawn_generation = -1;  ///< tells a respawned robot of the same name apart
     std::vector<Visual> visuals;
     std::vector<std::unique_ptr<sim_render::Renderer>> renderers;  ///< per camera, lazily
+    std::vector<std::unique_ptr<LensCamera>> lens_cameras;  ///< per wide-angle camera, lazily
     std::vector<size_t> camera_link_hints;
   };
 
@@ -218,6 +240,7 @@ struct CameraRenderer::Impl {
   void addRobot(const std::string& name, const RobotSpec& spec, RobotScene* robot) {
     robot->spawn_generation = sim.spawnGeneration(name);
     robot->renderers.resize(spec.cameras.size());
+    robot->lens_cameras.resize(spec.cameras.size());
     robot->camera_link_hints.assign(spec.cameras.size(), 0);
     for (const VisualSpec& v : spec.visuals) {
       const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
@@ -304,9 +327,14 @@ void CameraRenderer::render(const std::string& robot, size_t index, ImageData* i
   impl_->syncRobots();
   Impl::RobotScene& scene_robot = impl_->robots.at(robot);
   std::unique_ptr<sim_render::Renderer>& renderer = scene_robot.renderers[index];
-  if (!renderer) {
+  std::unique_ptr<LensCamera>& lens_camera = scene_robot.lens_cameras[index];
+  if (!renderer && !lens_camera) {
     validateCamera(camera);
-    renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
+    if (camera.lens) {
+      lens_camera = std::make_unique<LensCamera>(camera);
+    } else {
+      renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
+    }
   }
   impl_->poseRobots(robot);
   const Pose3* link =
@@ -320,7 +348,12 @@ void CameraRenderer::render(const std::string& robot, size_t index, ImageData* i
   image->height = camera.height;
   image->encoding = imageEncoding(camera);
   const bool rgb8 = image->encoding == "rgb8";
-  renderer->render(impl_->scene, T_world_camera, rgb8 ? image->data : impl_->rgb);
+  std::vector<uint8_t>& rgb = rgb8 ? image->data : impl_->rgb;
+  if (lens_camera) {
+    lens_camera->render(impl_->scene, T_world_camera, rgb);
+  } else {
+    renderer->render(impl_->scene, T_world_camera, rgb);
+  }
   if (depth) {
     depth->time_s = image->time_s;
     depth->frame_id = camera.frame_id;

@@ -12,6 +12,7 @@
 
 #include "bullet_sim/errors.h"
 #include "gazebo_materials.h"
+#include "lens_reader.h"
 #include "xml_values.h"
 
 namespace bullet_sim {
@@ -128,6 +129,14 @@ class ExtensionReader {
       checkCameraValues(s, where);
       spec_->cameras.push_back(
           readCamera(s, plugin, link, name, where, "image_raw", "camera_info"));
+    } else if (type == "wideanglecamera") {
+      if (file != "libgazebo_ros_camera.so") return noPlugin(type, name, link, file);
+      checkParameters();
+      checkCameraValues(s, where, true);
+      CameraSpec c = readCamera(s, plugin, link, name, where, "image_raw", "camera_info");
+      c.lens = readLens(s->FirstChildElement("camera"), c.horizontal_fov_rad, xml_,
+                        where + " <camera>");
+      spec_->cameras.push_back(c);
     } else if (type == "depth") {
       if (file != kKinectPlugin && file != kDepthCameraPlugin) {
         return noPlugin(type, name, link, file);
@@ -270,15 +279,17 @@ class ExtensionReader {
     spec_->cameras.push_back(c);
   }
 
-  /// A camera's <camera> values that no renderer can use are load errors.
-  void checkCameraValues(const XMLElement* s, const std::string& where) {
+  /// A camera's <camera> values that no renderer can use are load errors. A wide-angle
+  /// camera's horizontal fov may reach 2 pi, a pinhole's stays below pi.
+  void checkCameraValues(const XMLElement* s, const std::string& where, bool wide_angle = false) {
     const XMLElement* cam = s->FirstChildElement("camera");
     if (!cam) xml_.fail(where, "needs a <camera> element");
     const std::string cw = where + " <camera>";
     const double fov = xml_.number(cam, "horizontal_fov", 1.047, cw);
-    if (!(fov > 0 && fov < M_PI)) {
-      xml_.fail(cw + " <horizontal_fov>",
-                "'" + xml_.text(cam, "horizontal_fov", "") + "' must be in (0, pi) radians");
+    if (!(fov > 0 && (wide_angle ? fov <= 2 * M_PI : fov < M_PI))) {
+      xml_.fail(cw + " <horizontal_fov>", "'" + xml_.text(cam, "horizontal_fov", "") +
+                                              (wide_angle ? "' must be in (0, 2 pi] radians"
+                                                          : "' must be in (0, pi) radians"));
     }
     if (const XMLElement* image = cam->FirstChildElement("image")) {
       for (const char* dim : {"width", "height"}) {
