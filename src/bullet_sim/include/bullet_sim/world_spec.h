@@ -22,6 +22,9 @@ struct StaticShape : Geometry {
   /// The material colour; a mesh part with a colour of its own in the file keeps that.
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
   bool collides = true;              ///< false for visual-only geometry
+  /// Collision only: the friction coefficient of its <surface> (SurfaceParams::isotropicMu;
+  /// 1, Gazebo's default, where the file gives none)
+  double friction = 1.0;
 };
 
 /// A movable (non-static) model of the world: simulated as a robot of the same name,

@@ -9,6 +9,7 @@
 #include "robot_plan.h"
 #include "sdf_document.h"
 #include "sdf_model.h"
+#include "sdf_surface.h"
 #include "sdf_util.h"
 #include "world_state.h"
 
@@ -137,10 +138,14 @@ class WorldReader {
                 WorldSpec* spec) {
     for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
       const sdf::Collision& col = *link.CollisionByIndex(c);
-      checkGeometrySize(*col.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
-                                         "' collision '" + col.Name() + "'");
+      const std::string where = source_ + ": model '" + model + "' link '" + link.Name() +
+                                "' collision '" + col.Name() + "'";
+      checkGeometrySize(*col.Geom(), where);
       spec->shapes.push_back(shape(model, link, *col.Geom(),
                                    T_world_link * toIso(poseInParent(col)), true));
+      SurfaceParams surface;
+      readOdeFriction(col, where, &surface);
+      spec->shapes.back().friction = surface.isotropicMu();
     }
     for (uint64_t v = 0; v < link.VisualCount(); ++v) {
       const sdf::Visual& vis = *link.VisualByIndex(v);
