@@ -24,6 +24,10 @@ using Geometry = sim_render::Geometry;
 /// Gazebo surface parameters of one link (<gazebo reference="link"><mu1>...).
 struct SurfaceParams {
   double mu1 = 1.0, mu2 = 1.0, kp = 1e12, kd = 1.0;
+  /// The one friction coefficient the link's contacts are given: friction is isotropic
+  /// here, the mean of the two directions' (Gazebo's ODE applies mu1 along fdir1, mu2
+  /// across it).
+  double isotropicMu() const { return 0.5 * (mu1 + mu2); }
 };
 
 /// A <sensor type="ray"> (planar lidar) and its libgazebo_ros_laser.so plugin.

@@ -23,6 +23,9 @@ struct StaticShape : Geometry {
   Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
   TextureRef texture;  ///< a Gazebo material script's texture (mesh files carry their own)
   bool collides = true;              ///< false for visual-only geometry
+  /// Collision only: the friction coefficient of its <surface> (SurfaceParams::isotropicMu;
+  /// 1, Gazebo's default, where the file gives none)
+  double friction = 1.0;
 };
 
 /// A movable (non-static) model of the world: simulated as a robot of the same name,

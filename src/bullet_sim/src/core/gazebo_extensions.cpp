@@ -73,7 +73,12 @@ class ExtensionReader {
     s.mu2 = xml_.number(g, "mu2", s.mu2, where);
     s.kp = xml_.number(g, "kp", s.kp, where);
     s.kd = xml_.number(g, "kd", s.kd, where);
-    if (s.mu1 < 0 || s.mu2 < 0) xml_.fail(where, "friction mu1/mu2 must not be negative");
+    for (const auto& [name, mu] : {std::make_pair("mu1", s.mu1), std::make_pair("mu2", s.mu2)}) {
+      if (!(mu >= 0)) {
+        xml_.fail(where + " <" + name + ">",
+                  "'" + xml_.text(g, name, "") + "' is not a friction coefficient >= 0");
+      }
+    }
     spec_->surfaces[link] = s;
   }
 

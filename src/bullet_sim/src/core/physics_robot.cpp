@@ -64,10 +64,10 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   if (plan.collisions.empty()) {
     body.shape = std::make_unique<btEmptyShape>();
   } else if (single_at_com) {
-    // Saves the compound's per-step overhead (the Burger's wheels).
+    // Saves the compound's per-step overhead (the Burger's wheels). Its friction is the
+    // body's own (set below).
     body.shape = makeCollisionShape(plan.collisions[0], plan.collisions[0].mesh.get(),
                                     Motion::Moving);
-    body.material.child_friction.push_back(plan.collisions[0].friction);
   } else {
     // A robot body has a handful of parts: a linear scan beats a child AABB tree.
     auto compound =
@@ -84,6 +84,7 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   btRigidBody::btRigidBodyConstructionInfo info(plan.mass_kg, nullptr, body.shape.get(),
                                                 toBt(plan.principal_inertia));
   body.rigid = std::make_unique<btRigidBody>(info);
+  if (single_at_com) body.rigid->setFriction(plan.collisions[0].friction);
   // A robot that has come to rest sleeps, as resting bodies do in Bullet: its
   // contacts then cannot creep. Commands, teleports and contacts wake it
   // (Bullet lets a body sleep after 2 s below these speeds).

@@ -14,7 +14,8 @@
 namespace bullet_sim {
 
 /// Per-body data Bullet's contact callback reads: the friction of each child
-/// shape of the body's compound (links merged into one body keep their own mu).
+/// shape of the body's compound (links merged into one body keep their own mu). A body
+/// of a single shape has no compound: its friction is the rigid body's.
 struct BodyMaterial {
   int robot_id = -1;
   std::vector<double> child_friction;

@@ -10,21 +10,27 @@
 namespace bullet_sim {
 namespace {
 
-constexpr double kStaticFriction = 1.0;
-
-double frictionOf(const btCollisionObjectWrapper* w, int child_index) {
+/// The friction of the surface a contact touches. A compound body's parts keep their own
+/// links' friction: Bullet hands a contact with a part the part's wrapper, whose index is
+/// the part's. Any other body (a single shape, a static shape) has one friction, its own.
+/// (The part indices Bullet passes beside the wrappers are set only for compounds and
+/// meshes; for two single shapes they are left as they were.)
+double frictionOf(const btCollisionObjectWrapper* w) {
   const btCollisionObject* obj = w->getCollisionObject();
   const auto* material = static_cast<const BodyMaterial*>(obj->getUserPointer());
   if ((obj->getCollisionFlags() & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK) && material &&
-      child_index >= 0 && child_index < static_cast<int>(material->child_friction.size())) {
-    return material->child_friction[child_index];
+      obj->getCollisionShape()->isCompound() && w->m_index >= 0 &&
+      w->m_index < static_cast<int>(material->child_friction.size())) {
+    return material->child_friction[w->m_index];
   }
   return obj->getFriction();
 }
 
-bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int, int index_a,
-                     const btCollisionObjectWrapper* b, int, int index_b) {
-  cp.m_combinedFriction = std::min(frictionOf(a, index_a), frictionOf(b, index_b));
+/// Gazebo's ODE takes the smaller of the two surfaces' coefficients for a contact; Bullet
+/// would multiply them.
+bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int, int,
+                     const btCollisionObjectWrapper* b, int, int) {
+  cp.m_combinedFriction = std::min(frictionOf(a), frictionOf(b));
   return true;
 }
 
@@ -58,7 +64,7 @@ PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
     auto obj = std::make_unique<btCollisionObject>();
     obj->setCollisionShape(shapes_.back().get());
     obj->setWorldTransform(toBt(toIsometry(s.pose)));
-    obj->setFriction(kStaticFriction);
+    obj->setFriction(s.friction);
     obj->setUserIndex(-1);
     // Bullet recomputes the bounding box of every "active" object each step;
     // static shapes never move.

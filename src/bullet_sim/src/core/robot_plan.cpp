@@ -95,7 +95,7 @@ class Planner {
   void addCollisions(size_t body, const urdf::Link& link, const Eigen::Isometry3d& T_root_link) {
     const auto surface = spec_.surfaces.find(link.name);
     const double friction =
-        surface == spec_.surfaces.end() ? 1.0 : 0.5 * (surface->second.mu1 + surface->second.mu2);
+        (surface == spec_.surfaces.end() ? SurfaceParams() : surface->second).isotropicMu();
     for (const urdf::CollisionSharedPtr& c : link.collision_array) {
       if (!c || !c->geometry) continue;
       CollisionPlan col;

@@ -14,6 +14,7 @@
 #include "description_geometry.h"
 #include "robot_parser.h"
 #include "robot_plan.h"
+#include "sdf_surface.h"
 #include "sdf_util.h"
 #include "urdf_checks.h"
 #include "visual_appearance.h"
@@ -271,9 +272,10 @@ class SdfModelConverter {
       auto col = std::make_shared<urdf::Collision>();
       col->name = c.Name();
       col->origin = toUrdf(toIso(poseInParent(c)));
-      col->geometry = geometry(*c.Geom(), where + " collision '" + c.Name() + "'");
+      const std::string cwhere = where + " collision '" + c.Name() + "'";
+      col->geometry = geometry(*c.Geom(), cwhere);
       out->collision_array.push_back(col);
-      readFriction(c, entry.name);
+      readFriction(c, entry.name, cwhere);
     }
     for (uint64_t i = 0; i < l.VisualCount(); ++i) {
       const sdf::Visual& v = *l.VisualByIndex(i);
@@ -321,15 +323,10 @@ class SdfModelConverter {
   }
 
   /// <surface><friction><ode><mu>/<mu2> of a collision, as the URDF <gazebo> tags give them.
-  void readFriction(const sdf::Collision& c, const std::string& link) {
-    sdf::ElementPtr e = c.Element();
-    for (const char* name : {"surface", "friction", "ode"}) {
-      if (!e || !e->HasElement(name)) return;
-      e = e->GetElement(name);
-    }
-    SurfaceParams& s = spec_.surfaces[link];
-    if (e->HasElement("mu")) s.mu1 = e->Get<double>("mu");
-    if (e->HasElement("mu2")) s.mu2 = e->Get<double>("mu2");
+  void readFriction(const sdf::Collision& c, const std::string& link, const std::string& where) {
+    const auto known = spec_.surfaces.find(link);
+    SurfaceParams s = known == spec_.surfaces.end() ? SurfaceParams() : known->second;
+    if (readOdeFriction(c, where, &s)) spec_.surfaces[link] = s;
   }
 
   void warnAboutPlugins(const sdf::Model& m) {

@@ -10,6 +10,7 @@
 #include "robot_plan.h"
 #include "sdf_document.h"
 #include "sdf_model.h"
+#include "sdf_surface.h"
 #include "sdf_util.h"
 #include "world_state.h"
 
@@ -138,10 +139,14 @@ class WorldReader {
                 WorldSpec* spec) {
     for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
       const sdf::Collision& col = *link.CollisionByIndex(c);
-      checkGeometrySize(*col.Geom(), source_ + ": model '" + model + "' link '" + link.Name() +
-                                         "' collision '" + col.Name() + "'");
+      const std::string where = source_ + ": model '" + model + "' link '" + link.Name() +
+                                "' collision '" + col.Name() + "'";
+      checkGeometrySize(*col.Geom(), where);
       StaticShape s = shape(model, link, *col.Geom(), T_world_link * toIso(poseInParent(col)), true);
       if (s.kind == Geometry::Mesh && !s.mesh) continue;  // not found: warned, left out
+      SurfaceParams surface;
+      readOdeFriction(col, where, &surface);
+      s.friction = surface.isotropicMu();
       spec->shapes.push_back(std::move(s));
     }
     for (uint64_t v = 0; v < link.VisualCount(); ++v) {

@@ -1,5 +1,6 @@
 #include "burger.h"
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -36,6 +37,23 @@ bullet_sim::WorldSpec flatWorld() {
 
 std::string roundTrackPath() {
   return std::string(BULLET_SIM_WORKSPACE) + "/src/turtlebot3_gazebo/worlds/roundTrack.world";
+}
+
+double yawOf(const Eigen::Quaterniond& q) {
+  return std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
+}
+
+double turnFor(bullet_sim::Simulation* sim, const std::string& robot, double seconds) {
+  constexpr double kStepS = 0.001;
+  double heading = 0, last = yawOf(sim->modelPose(robot).orientation);
+  const long steps = std::lround(seconds / kStepS);
+  for (long i = 0; i < steps; ++i) {
+    sim->step();
+    const double now = yawOf(sim->modelPose(robot).orientation);
+    heading += std::remainder(now - last, 2 * M_PI);
+    last = now;
+  }
+  return heading;
 }
 
 }  // namespace bullet_sim_test

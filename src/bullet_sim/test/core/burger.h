@@ -3,7 +3,10 @@
 
 #include <string>
 
+#include <Eigen/Geometry>
+
 #include "bullet_sim/robot_spec.h"
+#include "bullet_sim/simulation.h"
 #include "bullet_sim/world_spec.h"
 
 namespace bullet_sim_test {
@@ -17,6 +20,12 @@ bullet_sim::RobotSpec burgerSpec();
 bullet_sim::WorldSpec flatWorld();
 /// The round-track world file of turtlebot3_gazebo.
 std::string roundTrackPath();
+
+/// Heading (rad) of an orientation: its yaw about the world's z.
+double yawOf(const Eigen::Quaterniond& q);
+/// Steps `sim` for `seconds` (1 ms steps) and returns how far `robot` turned, accumulated
+/// step by step, so that turns beyond pi are measured.
+double turnFor(bullet_sim::Simulation* sim, const std::string& robot, double seconds);
 
 }  // namespace bullet_sim_test
 

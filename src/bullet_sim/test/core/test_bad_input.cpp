@@ -194,6 +194,12 @@ TEST(BadUrdf, SensorWithNegativeUpdateRate) {
                              "<update_rate>: '-5' is not a rate >= 0 Hz");
 }
 
+TEST(BadUrdf, NanFrictionNamesLinkAndValue) {
+  const RobotError e("urdf_nan_friction.urdf");
+  EXPECT_EQ(e.text, e.path + ": <gazebo reference=\"wheel\"> <mu1>: 'nan' is not a friction "
+                             "coefficient >= 0");
+}
+
 TEST(BadUrdf, CameraWithZeroFieldOfView) {
   const RobotError e("urdf_camera_zero_fov.urdf");
   EXPECT_EQ(e.text, e.path + ": <gazebo reference=\"base_link\"> <sensor name=\"front_camera\"> "
@@ -236,6 +242,26 @@ TEST(BadWorld, NegativeCylinderLength) {
             fixture("world_negative_length.world") +
                 ": model 'crate' link 'body' collision 'collision': <cylinder> <length>: '-0.5' "
                 "must be finite and not negative");
+}
+
+TEST(BadWorld, NanFrictionNamesModelLinkCollisionAndValue) {
+  // libsdformat refuses a negative <mu> itself, but takes "nan".
+  EXPECT_EQ(worldErrorOf("world_nan_friction.world"),
+            fixture("world_nan_friction.world") +
+                ": model 'floor' link 'link' collision 'collision': "
+                "<surface><friction><ode><mu>: 'nan' is not a friction coefficient >= 0");
+}
+
+TEST(BadWorld, NanFrictionOfASpawnedSdfModel) {
+  const std::string sdf = R"(<?xml version="1.0"?><sdf version="1.6"><model name="puck">
+      <link name="body"><collision name="base"><geometry><sphere><radius>0.1</radius></sphere>
+      </geometry><surface><friction><ode><mu>0.5</mu><mu2>nan</mu2></ode></friction></surface>
+      </collision></link></model></sdf>)";
+  const std::string error = loadErrorOf([&] { parseSdfModelString(sdf, "puck"); });
+  EXPECT_NE(error.find("link 'body' collision 'base': <surface><friction><ode><mu2>: 'nan' is "
+                       "not a friction coefficient >= 0"),
+            std::string::npos)
+      << error;
 }
 
 TEST(BadWorld, NegativeSphereRadiusOfASpawnedSdfModel) {

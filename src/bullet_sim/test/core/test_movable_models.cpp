@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -176,31 +177,74 @@ TEST(MovableModels, DroppedBoxesRestOnTheGroundAndOnAStaticBox) {
   EXPECT_NEAR(sim.modelPose("box").position.z(), 0.5, 1e-9);
 }
 
-TEST(MovableModels, PushedCrateSlidesAsFarAsItsFrictionLetsIt) {
-  // A 0.2 m crate with its mass low (centre of mass 5 cm below its middle) and the
-  // friction coefficient 0.5 of its <surface>; the ground's is 1, a contact takes the
-  // smaller. (Its off-centre mass gives Bullet a compound body: Bullet reads a single-shape
-  // body's friction from the body, which bullet_sim leaves at Bullet's default 0.5.)
-  const std::string crate =
-      "<model name='crate'><pose>0 0 0.1 0 0 0</pose><link name='link'><inertial>"
-      "<pose>0 0 -0.05 0 0 0</pose><mass>1</mass><inertia><ixx>0.007</ixx><iyy>0.007</iyy>"
-      "<izz>0.007</izz></inertia></inertial><collision name='c'><geometry><box>"
-      "<size>0.2 0.2 0.2</size></box></geometry><surface><friction><ode><mu>0.5</mu>"
-      "<mu2>0.5</mu2></ode></friction></surface></collision></link></model>";
-  const WorldSpec spec = loadWorldString(world(crate), "w", kNoPaths);
-  ASSERT_EQ(spec.models.size(), 1u);
-  EXPECT_DOUBLE_EQ(spec.models[0].spec.surfaces.at("link").mu1, 0.5);
-  Simulation sim(spec, SimConfig());
-  run(&sim, 0.2);
-  const double x0 = sim.modelPose("crate").position.x();
+/// A 0.2 m crate of 1 kg at (x, 0), its centre of mass `com_z` below its middle, its
+/// <surface> friction `mu` (none when empty).
+std::string crate(const std::string& name, double x, double com_z, const std::string& mu) {
+  const std::string surface =
+      mu.empty() ? "" : "<surface><friction><ode><mu>" + mu + "</mu><mu2>" + mu +
+                            "</mu2></ode></friction></surface>";
+  return "<model name='" + name + "'><pose>" + std::to_string(x) +
+         " 0 0.1 0 0 0</pose><link name='link'><inertial><pose>0 0 " + std::to_string(-com_z) +
+         " 0 0 0</pose><mass>1</mass><inertia><ixx>0.007</ixx><iyy>0.007</iyy><izz>0.007</izz>"
+         "</inertia></inertial><collision name='c'><geometry><box><size>0.2 0.2 0.2</size>"
+         "</box></geometry>" + surface + "</collision></link></model>";
+}
+
+/// Pushes each crate along +x at 1 m/s once they rest and returns how far each slid.
+std::vector<double> slideDistances(Simulation* sim, const std::vector<std::string>& crates) {
+  run(sim, 0.2);
+  std::vector<double> x0;
   Twist3 push;
   push.linear = Eigen::Vector3d(1.0, 0, 0);
-  sim.setModelState("crate", sim.modelPose("crate"), push);
-  run(&sim, 1.0);
-  // Coulomb friction mu stops a body sliding at v after v^2 / (2 mu g).
-  const double expected = 1.0 / (2 * 0.5 * kG);
-  EXPECT_NEAR(sim.modelPose("crate").position.x() - x0, expected, 0.1 * expected);
-  EXPECT_LT(sim.modelTwist("crate").linear.norm(), 1e-3);
+  for (const std::string& c : crates) {
+    x0.push_back(sim->modelPose(c).position.x());
+    sim->setModelState(c, sim->modelPose(c), push);
+  }
+  run(sim, 1.0);
+  std::vector<double> slid;
+  for (size_t i = 0; i < crates.size(); ++i) {
+    EXPECT_LT(sim->modelTwist(crates[i]).linear.norm(), 1e-3) << crates[i];
+    slid.push_back(sim->modelPose(crates[i]).position.x() - x0[i]);
+  }
+  return slid;
+}
+
+TEST(MovableModels, PushedCratesSlideAsFarAsTheirFrictionLetsThem) {
+  // Two crates with the friction 0.3 of their <surface> on Gazebo's ground_plane (mu 100,
+  // mu2 50): a contact takes the smaller, 0.3. One has its centre of mass in its middle,
+  // where its one collision box is (Bullet then makes the body of that box alone), the
+  // other 5 cm lower (Bullet makes a compound of the box): both keep their 0.3.
+  const WorldSpec spec = loadWorldString(
+      world(crate("centred", 0, 0, "0.3") + crate("low", 1, 0.05, "0.3")), "w", kNoPaths);
+  ASSERT_EQ(spec.models.size(), 2u);
+  EXPECT_DOUBLE_EQ(spec.models[0].spec.surfaces.at("link").mu1, 0.3);
+  Simulation sim(spec, SimConfig());
+  // Coulomb friction mu stops a body sliding at v after v^2 / (2 mu g): 0.170 m (0.102 m
+  // at Bullet's default friction 0.5). Bullet stops a sliding box 3-4 % short of that.
+  const double expected = 1.0 / (2 * 0.3 * kG);
+  const std::vector<double> slid = slideDistances(&sim, {"centred", "low"});
+  EXPECT_NEAR(slid[0], expected, 0.05 * expected);
+  EXPECT_NEAR(slid[1], expected, 0.05 * expected);
+}
+
+TEST(MovableModels, AStaticGroundsFrictionIsItsFilesWhenItIsTheSmaller) {
+  // A static ground with <mu> 0.2 and <mu2> 0.4 (a contact here takes their mean, 0.3) under
+  // a crate with no <surface> (Gazebo's default, 1): the contact takes the ground's 0.3 and
+  // the crate slides 1 / (2 * 0.3 * g) = 0.170 m (0.102 m at the 1 static shapes had before).
+  const std::string ground =
+      "<model name='ice'><static>true</static><link name='link'><collision name='c'>"
+      "<geometry><plane><normal>0 0 1</normal><size>20 20</size></plane></geometry>"
+      "<surface><friction><ode><mu>0.2</mu><mu2>0.4</mu2></ode></friction></surface>"
+      "</collision></link></model>";
+  const WorldSpec spec = loadWorldString(
+      "<sdf version='1.6'><world name='w'>" + ground + crate("crate", 0, 0, "") +
+          "</world></sdf>",
+      "w", kNoPaths);
+  ASSERT_EQ(spec.shapes.size(), 1u);
+  EXPECT_DOUBLE_EQ(spec.shapes[0].friction, 0.3);
+  Simulation sim(spec, SimConfig());
+  const double expected = 1.0 / (2 * 0.3 * kG);
+  EXPECT_NEAR(slideDistances(&sim, {"crate"})[0], expected, 0.05 * expected);
 }
 
 TEST(MovableModels, HingeAwayFromTheChildOriginSwingsAboutTheJoint) {
