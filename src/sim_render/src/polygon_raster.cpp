@@ -222,13 +222,21 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
     const float fw = static_cast<float>(level.width), fh = static_cast<float>(level.height);
     float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
     std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
+    // Each plane at the span's first pixel in double, then stepped in float along the row
+    // (as the flat-colour path steps its depth).
+    const float iz0 = static_cast<float>(iz.x() * col_begin + iz.y() * row + iz.z());
+    const float uz0 = static_cast<float>(uz.x() * col_begin + uz.y() * row + uz.z());
+    const float vz0 = static_cast<float>(vz.x() * col_begin + vz.y() * row + vz.z());
+    const float diz = static_cast<float>(iz.x()), duz = static_cast<float>(uz.x()),
+                dvz = static_cast<float>(vz.x());
     for (int col = col_begin; col < col_end; ++col, pixel += 3) {
-      const float inverse_depth = static_cast<float>(iz.x() * col + iz.y() * row + iz.z());
+      const float k = static_cast<float>(col - col_begin);
+      const float inverse_depth = iz0 + diz * k;
       if (!(inverse_depth > depth[col] && inverse_depth >= inverse_far)) continue;
       depth[col] = inverse_depth;
       const float w = 1.0f / inverse_depth;
-      const float u = static_cast<float>(uz.x() * col + uz.y() * row + uz.z()) * w;
-      const float v = static_cast<float>(vz.x() * col + vz.y() * row + vz.z()) * w;
+      const float u = (uz0 + duz * k) * w;
+      const float v = (vz0 + dvz * k) * w;
       const int x = std::min(level.width - 1, static_cast<int>((u - std::floor(u)) * fw));
       const int y = std::min(level.height - 1, static_cast<int>((v - std::floor(v)) * fh));
       const std::uint8_t* t = &level.rgb8[(static_cast<std::size_t>(y) * level.width + x) * 3];
