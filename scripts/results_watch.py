@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Watches a test-results folder while the tests run: a line per result file as it appears
-(its counts, and the time since the previous one: the test's own run time, with catkin's
-building of it), and at the end the ten slowest. Stops when the file named by --stop exists
+"""Watches a test-results folder while the tests run: a line per result file once it is
+final (its counts, and the time since the previous one: about the test's own run time),
+and at the end the ten slowest. Stops when the file named by --stop exists
 (the test run writes it when done)."""
 import argparse
 import glob
@@ -20,12 +20,22 @@ class Watcher:
         self.seen = set()
         self.durations = []  # (seconds, name)
 
-    def poll(self):
-        paths = sorted(glob.glob(os.path.join(self.results_dir, '**', '*.xml'), recursive=True),
-                       key=lambda p: os.path.getmtime(p) if os.path.exists(p) else 0)
+    def poll(self, final=False):
+        """Prints the result files that are done: every one but the newest while the tests
+        run (rostest writes a placeholder result when a test starts and the real one when
+        it ends; the tests run one at a time, so a file is final once a newer one exists),
+        and all of them on the final poll."""
+        paths = glob.glob(os.path.join(self.results_dir, '**', '*.xml'), recursive=True)
+        stamped = []
         for path in paths:
-            # A file still being written (modified in the last second) waits for the next poll.
-            if path in self.seen or not self.settled(path):
+            try:
+                stamped.append((os.path.getmtime(path), path))
+            except OSError:
+                continue
+        stamped.sort()
+        done = stamped if final else stamped[:-1]
+        for _, path in done:
+            if path in self.seen or not (final or self.settled(path)):
                 continue
             self.seen.add(path)
             now = self.clock()
@@ -64,7 +74,7 @@ def main():
     while not os.path.exists(args.stop):
         watcher.poll()
         time.sleep(args.period)
-    watcher.poll()
+    watcher.poll(final=True)
     sys.stdout.write(watcher.slowest())
 
 

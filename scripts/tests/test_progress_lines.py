@@ -42,7 +42,7 @@ def test_a_line_when_a_package_starts_and_its_span_at_the_end():
     assert summary[2].split()[:3] == ['bullet_sim', '135.0', 's']
 
 
-def write_result(folder, name, passed, failed):
+def write_result(folder, name, passed, failed, mtime):
     cases = ''.join('<testcase classname="c" name="p%d"/>' % i for i in range(passed))
     cases += ''.join('<testcase classname="c" name="f%d"><failure message="no"/></testcase>' % i
                      for i in range(failed))
@@ -50,33 +50,54 @@ def write_result(folder, name, passed, failed):
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, 'w') as f:
         f.write('<testsuite>%s</testsuite>' % cases)
-    os.utime(path, (1000, 1000))
+    os.utime(path, (mtime, mtime))
     return path
 
 
-def test_a_line_per_result_file_and_the_slowest_at_the_end():
+def test_a_line_per_finished_result_file_and_the_slowest_at_the_end():
     folder = tempfile.mkdtemp()
     clock, out = Clock(), io.StringIO()
     watcher = results_watch.Watcher(folder, out, clock, wall_clock=lambda: 2000.0)
     clock.now = 30
-    write_result(folder, 'pkg_a/gtest-a.xml', 3, 0)
+    write_result(folder, 'pkg_a/gtest-a.xml', 3, 0, 1000)
     watcher.poll()
+    assert out.getvalue() == ''  # the newest file may still be rewritten
     clock.now = 130
-    write_result(folder, 'pkg_b/rostest-b.xml', 1, 1)
+    write_result(folder, 'pkg_b/rostest-b.xml', 1, 1, 1010)
     watcher.poll()
     watcher.poll()  # nothing new: nothing printed
+    clock.now = 150
+    watcher.poll(final=True)
     lines = out.getvalue().splitlines()
-    assert lines == ['[ 0:30] ok   pkg_a/gtest-a.xml: 3 passed, 0 failed, 0 skipped (30 s)',
-                     '[ 2:10] FAIL pkg_b/rostest-b.xml: 1 passed, 1 failed, 0 skipped (100 s)']
+    assert lines == ['[ 2:10] ok   pkg_a/gtest-a.xml: 3 passed, 0 failed, 0 skipped (130 s)',
+                     '[ 2:30] FAIL pkg_b/rostest-b.xml: 1 passed, 1 failed, 0 skipped (20 s)']
     assert watcher.slowest(1).splitlines() == ['slowest 1 result files (seconds since the one before):',
-                                               '     100 s  pkg_b/rostest-b.xml']
+                                               '     130 s  pkg_a/gtest-a.xml']
+
+
+def test_a_rostest_placeholder_is_not_reported_before_the_test_ends():
+    # rostest writes a failing placeholder when its test starts and the real result at the
+    # end: while it is the newest file it is not read.
+    folder = tempfile.mkdtemp()
+    out = io.StringIO()
+    watcher = results_watch.Watcher(folder, out, Clock(), wall_clock=lambda: 2000.0)
+    write_result(folder, 'pkg/gtest-a.xml', 2, 0, 1000)
+    write_result(folder, 'pkg/rostest-b.xml', 0, 1, 1001)  # the placeholder
+    watcher.poll()
+    assert 'rostest-b' not in out.getvalue()
+    write_result(folder, 'pkg/rostest-b.xml', 4, 0, 1050)  # the test's real result
+    write_result(folder, 'pkg/gtest-c.xml', 1, 0, 1060)
+    watcher.poll()
+    assert 'pkg/rostest-b.xml: 4 passed, 0 failed' in out.getvalue()
+    assert 'FAIL' not in out.getvalue()
 
 
 def test_a_file_still_being_written_waits_for_the_next_poll():
     folder = tempfile.mkdtemp()
     out = io.StringIO()
     watcher = results_watch.Watcher(folder, out, Clock(), wall_clock=lambda: 1000.5)
-    write_result(folder, 'pkg/gtest.xml', 1, 0)  # modified at 1000: half a second ago
+    write_result(folder, 'pkg/gtest.xml', 1, 0, 1000)  # modified half a second ago
+    write_result(folder, 'pkg/later.xml', 1, 0, 1000)
     watcher.poll()
     assert out.getvalue() == ''
     watcher.wall_clock = lambda: 1002.0
