@@ -8,6 +8,7 @@ import glob
 import os
 import sys
 import time
+import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from test_summary import count_file  # noqa: E402
@@ -21,10 +22,10 @@ class Watcher:
         self.durations = []  # (seconds, name)
 
     def poll(self, final=False):
-        """Prints the result files that are done: every one but the newest while the tests
-        run (rostest writes a placeholder result when a test starts and the real one when
-        it ends; the tests run one at a time, so a file is final once a newer one exists),
-        and all of them on the final poll."""
+        """Prints the result files that are done: while the tests run, every complete one but
+        the newest (rostest creates its files empty when a test starts and writes them when
+        it ends; tests run one at a time, so a file is final once a newer one exists), and
+        all of them on the final poll."""
         paths = glob.glob(os.path.join(self.results_dir, '**', '*.xml'), recursive=True)
         stamped = []
         for path in paths:
@@ -35,7 +36,7 @@ class Watcher:
         stamped.sort()
         done = stamped if final else stamped[:-1]
         for _, path in done:
-            if path in self.seen or not (final or self.settled(path)):
+            if path in self.seen or not (final or (self.settled(path) and self.complete(path))):
                 continue
             self.seen.add(path)
             now = self.clock()
@@ -50,6 +51,16 @@ class Watcher:
                 total // 60, total % 60, status, name, counts['passed'], counts['failed'],
                 counts['skipped'], seconds))
             self.out.flush()
+
+    @staticmethod
+    def complete(path):
+        """rostest creates its result files empty when a test starts and writes them when it
+        ends: an empty or unparsable file is not done yet."""
+        try:
+            ET.parse(path)
+            return True
+        except (ET.ParseError, OSError):
+            return False
 
     def settled(self, path):
         try:

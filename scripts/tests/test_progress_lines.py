@@ -92,6 +92,25 @@ def test_a_rostest_placeholder_is_not_reported_before_the_test_ends():
     assert 'FAIL' not in out.getvalue()
 
 
+def test_empty_result_files_of_a_running_rostest_wait_until_written():
+    folder = tempfile.mkdtemp()
+    out = io.StringIO()
+    watcher = results_watch.Watcher(folder, out, Clock(), wall_clock=lambda: 2000.0)
+    for name, mtime in (('pkg/rostest-t.xml', 1000), ('pkg/rosunit-t.xml', 1001)):
+        path = os.path.join(folder, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        open(path, 'w').close()
+        os.utime(path, (mtime, mtime))
+    watcher.poll()
+    assert out.getvalue() == ''
+    write_result(folder, 'pkg/rostest-t.xml', 3, 0, 1100)
+    write_result(folder, 'pkg/rosunit-t.xml', 3, 0, 1100)
+    write_result(folder, 'pkg/next.xml', 1, 0, 1200)
+    watcher.poll()
+    assert 'pkg/rostest-t.xml: 3 passed, 0 failed' in out.getvalue()
+    assert 'FAIL' not in out.getvalue()
+
+
 def test_a_file_still_being_written_waits_for_the_next_poll():
     folder = tempfile.mkdtemp()
     out = io.StringIO()
