@@ -13,9 +13,9 @@
 #include <cstdlib>
 #include <vector>
 
-#include "bullet_sim/camera_renderer.h"
-#include "bullet_sim/depth_camera.h"
 #include "bullet_sim/errors.h"
+#include "bullet_sim/render/camera_renderer.h"
+#include "bullet_sim/render/depth_camera.h"
 #include "bullet_sim/simulation.h"
 
 namespace {

@@ -15,8 +15,8 @@
 #include <string>
 
 #include "bullet_sim/errors.h"
-#include "bullet_sim/mesh.h"
-#include "mesh_import.h"
+#include "bullet_sim/description/mesh.h"
+#include "description/mesh/mesh_import.h"
 
 using namespace bullet_sim;
 

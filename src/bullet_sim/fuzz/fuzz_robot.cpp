@@ -9,10 +9,10 @@
 #include <string>
 
 #include "bullet_sim/errors.h"
-#include "bullet_sim/resource_paths.h"
-#include "bullet_sim/robot_spec.h"
+#include "bullet_sim/description/resource_paths.h"
+#include "bullet_sim/description/robot_spec.h"
 #include "bullet_sim/simulation.h"
-#include "bullet_sim/world_spec.h"
+#include "bullet_sim/description/world_spec.h"
 
 using namespace bullet_sim;
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "bullet_sim/entity_frames.h"
-#include "bullet_sim/external_forces.h"
-#include "bullet_sim/robot_spec.h"
-#include "bullet_sim/sensor_data.h"
+#include "bullet_sim/description/robot_spec.h"
+#include "bullet_sim/description/world_spec.h"
+#include "bullet_sim/sensors/sensor_data.h"
 #include "bullet_sim/types.h"
-#include "bullet_sim/world_spec.h"
+#include "bullet_sim/world/entity_frames.h"
+#include "bullet_sim/world/external_forces.h"
 
 namespace bullet_sim {
 
@@ -27,22 +27,12 @@ struct SimConfig {
   double cmd_vel_timeout_s = 0;
 };
 
-enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates };
-
 /// How a model stands: upright or tipped over, free or pushed into a static body.
 struct ModelCondition {
   double tilt_rad = 0;           ///< angle between the root link's z axis and the world's
   double wall_penetration_m = 0; ///< deepest reach of any of its bodies into a static body
   bool tippedOver() const { return tilt_rad > 0.7853981633974483; }  ///< beyond 45 degrees
   bool inWall() const { return wall_penetration_m > 0.01; }        ///< deeper than 1 cm
-};
-
-/// A sensor whose update period elapsed; index points into the robot spec's
-/// vector of that kind (0 for Odometry and JointStates).
-struct DueSensor {
-  std::string robot;
-  SensorKind kind;
-  size_t index;
 };
 
 /// The simulated world with its robots. Sim time only: nothing reads a clock.

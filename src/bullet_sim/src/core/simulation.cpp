@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "bullet_sim/errors.h"
-#include "ray_sensor.h"
-#include "robot_plan.h"
+#include "description/robot_plan.h"
+#include "sensors/ray_sensor.h"
 #include "simulation_impl.h"
 
 namespace bullet_sim {

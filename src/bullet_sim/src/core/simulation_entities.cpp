@@ -1,8 +1,8 @@
 // Simulation: models, links and joints by name, external forces, physics settings.
 #include <stdexcept>
 
-#include "bullet_convert.h"
-#include "robot_plan.h"
+#include "description/robot_plan.h"
+#include "physics/bullet_convert.h"
 #include "simulation_impl.h"
 
 namespace bullet_sim {

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "bullet_sim/external_forces.h"
 #include "bullet_sim/simulation.h"
-#include "diff_drive.h"
-#include "imu_sensor.h"
-#include "physics_robot.h"
-#include "physics_world.h"
-#include "sensor_schedule.h"
+#include "bullet_sim/world/external_forces.h"
+#include "physics/diff_drive.h"
+#include "physics/physics_robot.h"
+#include "physics/physics_world.h"
+#include "sensors/imu_sensor.h"
+#include "sensors/sensor_schedule.h"
 
 namespace bullet_sim {
 

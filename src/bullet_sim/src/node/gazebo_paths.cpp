@@ -1,6 +1,6 @@
 #include "gazebo_paths.h"
 
-#include <bullet_sim/resource_paths.h>
+#include <bullet_sim/description/resource_paths.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #include "simulator_node.h"
 
-#include <bullet_sim/robot_spec.h>
-#include <bullet_sim/world_spec.h>
+#include <bullet_sim/description/robot_spec.h>
+#include <bullet_sim/description/world_spec.h>
 
 #include <ros/console.h>
 

@@ -2,13 +2,13 @@
 #pragma once
 
 #include "config.h"
-#include "link_joint_services.h"
-#include "model_services.h"
-#include "pacer.h"
-#include "physics_services.h"
-#include "sim_runner.h"
-#include "status_reporter.h"
-#include "world_markers_io.h"
+#include "runner/pacer.h"
+#include "runner/sim_runner.h"
+#include "runner/status_reporter.h"
+#include "services/link_joint_services.h"
+#include "services/model_services.h"
+#include "services/physics_services.h"
+#include "topics/world_markers_io.h"
 
 #include <bullet_sim/simulation.h>
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "bullet_sim/camera_renderer.h"
+#include "bullet_sim/render/camera_renderer.h"
 
 namespace bullet_sim_test {
 

@@ -7,9 +7,9 @@
 
 #include "../core/burger.h"
 #include "../core/mesh_fixtures.h"
-#include "burger_camera.h"
-#include "bullet_sim/camera_renderer.h"
+#include "bullet_sim/render/camera_renderer.h"
 #include "bullet_sim/simulation.h"
+#include "burger_camera.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "../core/burger.h"
-#include "bullet_sim/camera_renderer.h"
 #include "bullet_sim/errors.h"
+#include "bullet_sim/render/camera_renderer.h"
 #include "bullet_sim/simulation.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "../core/burger.h"
-#include "bullet_sim/camera_renderer.h"
+#include "bullet_sim/render/camera_renderer.h"
 #include "bullet_sim/simulation.h"
 
 namespace {

@@ -12,11 +12,11 @@
 
 #include "../core/burger.h"
 #include "../core/mesh_fixtures.h"
-#include "burger_camera.h"
-#include "bullet_sim/camera_renderer.h"
+#include "bullet_sim/description/world_spec.h"
+#include "bullet_sim/render/camera_renderer.h"
+#include "bullet_sim/render/world_markers.h"
 #include "bullet_sim/simulation.h"
-#include "bullet_sim/world_markers.h"
-#include "bullet_sim/world_spec.h"
+#include "burger_camera.h"
 
 namespace {
 

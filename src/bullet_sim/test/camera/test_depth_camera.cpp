@@ -10,10 +10,10 @@
 #include <limits>
 #include <string>
 
-#include "depth_fixture.h"
-#include "bullet_sim/camera_renderer.h"
-#include "bullet_sim/depth_camera.h"
+#include "bullet_sim/render/camera_renderer.h"
+#include "bullet_sim/render/depth_camera.h"
 #include "bullet_sim/simulation.h"
+#include "depth_fixture.h"
 
 namespace {
 

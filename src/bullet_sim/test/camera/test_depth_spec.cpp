@@ -7,9 +7,9 @@
 #include <functional>
 #include <string>
 
-#include "depth_fixture.h"
+#include "bullet_sim/description/robot_spec.h"
 #include "bullet_sim/errors.h"
-#include "bullet_sim/robot_spec.h"
+#include "depth_fixture.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "../core/mesh_fixtures.h"
-#include "bullet_sim/textured_mesh.h"
+#include "bullet_sim/render/textured_mesh.h"
 
 namespace {
 

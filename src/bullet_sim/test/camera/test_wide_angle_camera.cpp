@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "../../src/core/lens_camera.h"
-#include "bullet_sim/camera_renderer.h"
 #include "bullet_sim/errors.h"
+#include "bullet_sim/render/camera_renderer.h"
 #include "bullet_sim/simulation.h"
+#include "render/lens_camera.h"
 #include "wide_angle_fixture.h"
 
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include "bullet_sim/description/robot_spec.h"
 #include "bullet_sim/errors.h"
-#include "bullet_sim/robot_spec.h"
 #include "wide_angle_fixture.h"
 
 namespace {

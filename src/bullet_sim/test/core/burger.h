@@ -5,9 +5,9 @@
 
 #include <Eigen/Geometry>
 
-#include "bullet_sim/robot_spec.h"
+#include "bullet_sim/description/robot_spec.h"
+#include "bullet_sim/description/world_spec.h"
 #include "bullet_sim/simulation.h"
-#include "bullet_sim/world_spec.h"
 
 namespace bullet_sim_test {
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "collision_shapes.h"
+#include "physics/collision_shapes.h"
 
 using namespace bullet_sim;
 

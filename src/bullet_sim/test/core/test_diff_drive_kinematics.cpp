@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "diff_drive_kinematics.h"
+#include "physics/diff_drive_kinematics.h"
 
 using bullet_sim::advancePose;
 using bullet_sim::DiffDriveKinematics;

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "bullet_sim/entity_frames.h"
-#include "bullet_sim/external_forces.h"
-#include "bullet_sim/model_properties.h"
-#include "bullet_sim/robot_spec.h"
+#include "bullet_sim/description/model_properties.h"
+#include "bullet_sim/description/robot_spec.h"
+#include "bullet_sim/world/entity_frames.h"
+#include "bullet_sim/world/external_forces.h"
 
 using namespace bullet_sim;
 

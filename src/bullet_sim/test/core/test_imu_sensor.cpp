@@ -9,7 +9,7 @@
 
 #include "bullet_sim/simulation.h"
 #include "burger.h"
-#include "imu_sensor.h"
+#include "sensors/imu_sensor.h"
 
 using namespace bullet_sim;
 

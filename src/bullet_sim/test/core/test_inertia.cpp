@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "bullet_sim/robot_spec.h"
-#include "robot_plan.h"
+#include "bullet_sim/description/robot_spec.h"
+#include "description/robot_plan.h"
 
 using namespace bullet_sim;
 

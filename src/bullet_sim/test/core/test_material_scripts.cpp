@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "description/material/material_scripts.h"
+#include "description/material/ogre_material.h"
 #include "load_errors.h"
-#include "material_scripts.h"
-#include "ogre_material.h"
 #include "temp_dir.h"
 
 using bullet_sim::findScriptMaterial;

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "bullet_sim/description/mesh.h"
 #include "bullet_sim/errors.h"
-#include "bullet_sim/mesh.h"
 #include "mesh_fixtures.h"
 
 using namespace bullet_sim;

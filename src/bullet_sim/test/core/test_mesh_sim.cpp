@@ -10,8 +10,8 @@
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 #include "burger.h"
-#include "mesh_fixtures.h"
 #include "load_errors.h"
+#include "mesh_fixtures.h"
 
 using namespace bullet_sim;
 using bullet_sim_test::boxTriangles;

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "ray_sensor.h"
+#include "sensors/ray_sensor.h"
 
 using namespace bullet_sim;
 

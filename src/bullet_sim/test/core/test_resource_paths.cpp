@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bullet_sim/resource_paths.h"
+#include "bullet_sim/description/resource_paths.h"
 #include "temp_dir.h"
 
 using bullet_sim::ResourcePaths;

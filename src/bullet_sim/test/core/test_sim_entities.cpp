@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "bullet_sim/robot_spec.h"
+#include "bullet_sim/description/robot_spec.h"
 #include "bullet_sim/simulation.h"
 
 using namespace bullet_sim;

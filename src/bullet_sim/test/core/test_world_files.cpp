@@ -6,12 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include "bullet_sim/description/world_spec.h"
 #include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
-#include "bullet_sim/world_spec.h"
 #include "burger.h"
-#include "temp_dir.h"
 #include "load_errors.h"
+#include "temp_dir.h"
 
 using namespace bullet_sim;
 using bullet_sim_test::TempDir;

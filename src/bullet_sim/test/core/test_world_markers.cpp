@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "bullet_sim/render/world_marker_set.h"
+#include "bullet_sim/render/world_markers.h"
 #include "bullet_sim/simulation.h"
-#include "bullet_sim/world_marker_set.h"
-#include "bullet_sim/world_markers.h"
 #include "burger.h"
 #include "mesh_fixtures.h"
 #include "round_track.h"

@@ -1,6 +1,6 @@
 // The node's adapters between core data and ROS messages (no master needed).
-#include "../../src/node/conversions.h"
-#include "../../src/node/tf_prefix.h"
+#include "topics/conversions.h"
+#include "topics/tf_prefix.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // PublishQueue: calls run on its own thread, in order, all of them, with bounded waiting.
-#include "../../src/node/publish_queue.h"
+#include "topics/publish_queue.h"
 
 #include <gtest/gtest.h>
 

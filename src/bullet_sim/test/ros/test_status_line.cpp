@@ -7,8 +7,8 @@
 
 #include <bullet_sim/simulation.h>
 
-#include "../../src/node/status_reporter.h"
 #include "../core/burger.h"
+#include "runner/status_reporter.h"
 
 namespace {
 

@@ -1,0 +1,170 @@
+#ifndef BULLET_SIM_ROBOT_SPEC_H
+#define BULLET_SIM_ROBOT_SPEC_H
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <urdf_model/model.h>
+#include <urdf_world/types.h>
+
+#include <sim_render/geometry.h>
+
+#include "bullet_sim/description/mesh.h"
+#include "bullet_sim/description/resource_paths.h"
+#include "bullet_sim/types.h"
+
+namespace bullet_sim {
+
+/// The geometry description shared with the renderer (sim_render/geometry.h).
+using Geometry = sim_render::Geometry;
+
+/// Gazebo surface parameters of one link (<gazebo reference="link"><mu1>...).
+struct SurfaceParams {
+  double mu1 = 1.0, mu2 = 1.0, kp = 1e12, kd = 1.0;
+  /// The one friction coefficient the link's contacts are given: friction is isotropic
+  /// here, the mean of the two directions' (Gazebo's ODE applies mu1 along fdir1, mu2
+  /// across it).
+  double isotropicMu() const { return 0.5 * (mu1 + mu2); }
+};
+
+/// A <sensor type="ray"> (planar lidar) and its libgazebo_ros_laser.so plugin.
+struct RaySpec {
+  std::string name, link, topic = "scan", frame_id;
+  Pose3 pose_in_link;
+  double update_rate_hz = 5, min_angle_rad = 0, max_angle_rad = 0, range_min_m = 0.1,
+         range_max_m = 10, range_resolution_m = 0, noise_mean_m = 0, noise_stddev_m = 0;
+  int samples = 1;
+};
+
+/// An IMU: a <sensor type="imu"> or a libgazebo_ros_imu(_sensor).so plugin.
+struct ImuSpec {
+  std::string name, link, topic = "imu", frame_id;
+  double update_rate_hz = 0, gaussian_noise = 0;
+};
+
+/// The depth part of a <sensor type="depth"> with libgazebo_ros_openni_kinect.so or
+/// libgazebo_ros_depth_camera.so: topics under the camera's <cameraName>, and the range
+/// (cutoff_m, cutoff_max_m), both exclusive, outside which depth and points are NaN.
+struct DepthSpec {
+  std::string plugin;  ///< the plugin's file name, as written
+  std::string depth_image_topic = "depth/image_raw", depth_info_topic = "depth/camera_info",
+              point_cloud_topic = "points";
+  double cutoff_m = 0.4;
+  /// <pointCloudCutoffMax> (openni_kinect only; the depth_camera plugin has no upper cutoff)
+  double cutoff_max_m = 5.0;
+};
+
+/// The <lens> of a <sensor type="wideanglecamera"> (SDF's defaults): the image radius r of a
+/// ray at angle theta from the optical axis is r = c1 * f * fun(theta / c2 + c3), r in units
+/// of the image's half width. A named `type` fixes c1, c2, c3 and fun (see camera_lens.h);
+/// "custom" takes them from <custom_function>.
+struct LensSpec {
+  std::string type = "stereographic";
+  double c1 = 1, c2 = 1, c3 = 0, f = 1;
+  std::string fun = "tan";  ///< "sin", "tan" or "id"
+  bool scale_to_hfov = true;  ///< f chosen so that r = 1 at theta = hfov / 2
+  double cutoff_angle_rad = 1.5707;  ///< rays further from the axis are black
+  int env_texture_size = 256;  ///< pixels along each side of a cube-map face
+};
+
+/// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin, or a
+/// <sensor type="depth">, whose colour image and camera_info are those of a camera (under
+/// Gazebo's depth plugins' defaults ir/image_raw and ir/camera_info) and `depth` the rest.
+struct CameraSpec {
+  std::string name, link, camera_name = "camera", image_topic = "image_raw",
+                          info_topic = "camera_info", frame_id;
+  Pose3 pose_in_link;
+  double update_rate_hz = 0, horizontal_fov_rad = 1.047, clip_near_m = 0.1, clip_far_m = 100;
+  int width = 320, height = 240;
+  std::string format = "R8G8B8";
+  std::optional<DepthSpec> depth;  ///< set for a depth camera
+  std::optional<LensSpec> lens;    ///< set for a wide-angle camera (hfov up to 2 pi)
+};
+
+/// Where the diff drive's odometry comes from (<odometrySource>).
+enum class OdomSource { World, Encoder };
+
+/// The libgazebo_ros_diff_drive.so plugin's parameters.
+struct DiffDriveSpec {
+  std::string left_joint, right_joint, command_topic = "cmd_vel", odometry_topic = "odom",
+                                        odometry_frame = "odom",
+                                        robot_base_frame = "base_footprint";
+  double wheel_separation_m = 0.34, wheel_diameter_m = 0.15, wheel_torque_nm = 5,
+         wheel_acceleration = 0, update_rate_hz = 100;
+  OdomSource odometry_source = OdomSource::World;
+  bool publish_odom_tf = true, publish_wheel_tf = false, publish_wheel_joint_state = false;
+};
+
+/// One URDF <visual>, in its link's frame (for the camera renderer): its geometry (a mesh's
+/// `mesh_uri` is the <mesh filename> as written), link, pose and colour.
+struct VisualSpec : Geometry {
+  std::string link;
+  Pose3 pose_in_link;
+  /// The URDF <material> colour; a mesh part with a colour of its own keeps that (as RViz).
+  Eigen::Vector4f rgba{0.7f, 0.7f, 0.7f, 1.0f};
+  TextureRef texture;  ///< a Gazebo material script's texture (mesh files carry their own)
+  std::shared_ptr<const TriangleMesh> mesh;   ///< Mesh: null when it could not be read
+};
+
+/// Everything the simulator needs from a robot description.
+struct RobotSpec {
+  std::string name;
+  urdf::ModelInterfaceSharedPtr urdf;
+  std::map<std::string, SurfaceParams> surfaces;  ///< by link name
+  std::vector<RaySpec> rays;
+  std::vector<ImuSpec> imus;
+  std::vector<CameraSpec> cameras;
+  std::optional<DiffDriveSpec> diff_drive;
+  std::vector<VisualSpec> visuals;
+  /// The collision meshes, by <mesh filename> as written in the URDF.
+  std::map<std::string, std::shared_ptr<const TriangleMesh>> collision_meshes;
+  /// Where the URDF root link sits in the model frame: identity for URDF robots; for an
+  /// SDF model the pose of its root link (the canonical link) in the <model> frame. Spawn
+  /// and model poses are poses of the model frame, as in Gazebo.
+  Pose3 root_link_in_model;
+  /// Unsupported plugins/sensors, links with collision but no inertial, ...
+  std::vector<std::string> warnings;
+};
+
+/// Parses a URDF document with urdfdom plus its Gazebo extension tags.
+/// @param source_name used in error messages ("robot_description" or a path).
+/// URIs in it (meshes) are looked up through `resolver` (see loadRobotMeshes; relative ones
+/// from the folder of `source_name` when that is a file, else from the current folder).
+/// @throws LoadError naming the source, element and bad value.
+RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name,
+                     const UriResolver& resolver);
+/// As above, with the resource paths of the environment (ROS_PACKAGE_PATH, GAZEBO_MODEL_PATH).
+RobotSpec parseRobot(const std::string& urdf_xml, const std::string& source_name);
+
+/// Reads the meshes `spec`'s URDF names (through MeshCache::shared()): every collision
+/// <mesh> into spec->collision_meshes, every visual one into its VisualSpec. URIs resolve
+/// through `resolver`, relative ones from `base_dir`.
+/// @throws LoadError naming `source`, the link and the URI (and the path or folders
+/// searched) for a collision mesh that is missing or unreadable, or a scale that is not
+/// finite and non-zero; a visual mesh in that state becomes a warning and is not drawn.
+void loadRobotMeshes(const UriResolver& resolver, const std::string& base_dir,
+                     const std::string& source, RobotSpec* spec);
+
+/// Reads a URDF file and parses it as parseRobot does (the path names the source; relative
+/// mesh names resolve from the file's folder).
+/// @throws LoadError when the file cannot be read or parsed.
+RobotSpec parseRobotFile(const std::string& path);
+
+/// Converts an SDF document holding one <model> into a RobotSpec, as a movable model of a
+/// world is simulated (Gazebo's spawn_sdf_model): its links with inertial, collision and
+/// visual geometry (material scripts give Gazebo's colours), its revolute, continuous,
+/// prismatic and fixed joints, nested models with `::`-scoped link names; the tree is
+/// rooted at the canonical link. <include>s are resolved through `resolver`.
+/// Sensors and plugins of the model are not simulated (a warning each).
+/// @throws LoadError naming the source, element and value.
+RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name,
+                              const UriResolver& resolver);
+/// As above, with the resource paths of the environment (GAZEBO_MODEL_PATH, ROS_PACKAGE_PATH).
+RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_ROBOT_SPEC_H

@@ -1,0 +1,64 @@
+#ifndef BULLET_SIM_SENSOR_DATA_H
+#define BULLET_SIM_SENSOR_DATA_H
+
+#include <string>
+#include <vector>
+
+#include "bullet_sim/types.h"
+
+namespace bullet_sim {
+
+enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates };
+
+/// A sensor whose update period elapsed; index points into the robot spec's
+/// vector of that kind (0 for Odometry and JointStates).
+struct DueSensor {
+  std::string robot;
+  SensorKind kind;
+  size_t index;
+};
+
+/// One planar scan, laid out as sensor_msgs/LaserScan.
+struct LaserScanData {
+  double time_s = 0;
+  std::string frame_id;
+  double angle_min = 0, angle_max = 0, angle_increment = 0, time_increment = 0, scan_time = 0,
+         range_min = 0, range_max = 0;
+  std::vector<float> ranges;       ///< +inf where nothing is hit within range_max
+  std::vector<float> intensities;
+};
+
+/// One IMU reading, in the IMU (link) frame.
+struct ImuData {
+  double time_s = 0;
+  std::string frame_id;
+  Eigen::Quaterniond orientation{1, 0, 0, 0};  ///< link orientation in the world
+  Eigen::Vector3d angular_velocity{0, 0, 0};
+  Eigen::Vector3d linear_acceleration{0, 0, 0};  ///< proper acceleration: +g on z at rest
+  double orientation_cov = 0, angular_velocity_cov = 0, linear_acceleration_cov = 0;
+};
+
+/// Odometry of the diff drive, laid out as nav_msgs/Odometry.
+struct OdometryData {
+  double time_s = 0;
+  std::string frame_id, child_frame_id;
+  Pose3 pose;             ///< child (robot base) in the odometry frame
+  Twist3 twist_in_child;  ///< body-frame twist, as nav_msgs/Odometry wants
+};
+
+/// State of every non-fixed joint, laid out as sensor_msgs/JointState.
+struct JointStateData {
+  double time_s = 0;
+  std::vector<std::string> names;
+  std::vector<double> positions, velocities, efforts;
+};
+
+/// World pose of one URDF link.
+struct LinkPose {
+  std::string link;
+  Pose3 pose;
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_SENSOR_DATA_H

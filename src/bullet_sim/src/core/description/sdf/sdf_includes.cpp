@@ -1,0 +1,117 @@
+#include "description/sdf/sdf_includes.h"
+
+#include <filesystem>
+#include <sstream>
+
+#include <tinyxml2.h>
+
+namespace bullet_sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// "1.6" -> {1, 6}; {-1, -1} when it is not a version.
+std::pair<int, int> parseVersion(const std::string& text) {
+  std::istringstream in(text);
+  int major = -1, minor = -1;
+  char dot = 0;
+  if (!(in >> major >> dot >> minor) || dot != '.') return {-1, -1};
+  return {major, minor};
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& s : items) out += (out.empty() ? "" : ", ") + s;
+  return out.empty() ? "(none)" : out;
+}
+
+bool isBuiltin(const std::string& name) { return name == "sun" || name == "ground_plane"; }
+
+}  // namespace
+
+std::string builtinModelsDir() { return BULLET_SIM_BUILTIN_MODELS_DIR; }
+
+std::string modelSdfFile(const std::string& model_dir, std::string* problem) {
+  const fs::path config = fs::path(model_dir) / "model.config";
+  std::error_code ec;
+  if (!fs::is_regular_file(config, ec)) {
+    *problem = "model folder " + model_dir + " has no model.config";
+    return "";
+  }
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(config.c_str()) != tinyxml2::XML_SUCCESS) {
+    *problem = config.string() + ": malformed XML: " + doc.ErrorStr();
+    return "";
+  }
+  const tinyxml2::XMLElement* model = doc.FirstChildElement("model");
+  if (!model) {
+    *problem = config.string() + ": no <model> element";
+    return "";
+  }
+  const std::pair<int, int> supported = parseVersion(sdf::SDF::Version());
+  std::pair<int, int> best{-1, -1};
+  std::string best_file, seen;
+  for (const tinyxml2::XMLElement* s = model->FirstChildElement("sdf"); s;
+       s = s->NextSiblingElement("sdf")) {
+    const char* version_text = s->Attribute("version");
+    const std::pair<int, int> version = parseVersion(version_text ? version_text : "");
+    seen += std::string(seen.empty() ? "" : ", ") + (version_text ? version_text : "?");
+    if (version.first < 0 || version > supported || version <= best || !s->GetText()) continue;
+    best = version;
+    best_file = s->GetText();
+  }
+  if (best_file.empty()) {
+    *problem = config.string() + ": no <sdf version=\"..\"> entry that libsdformat " +
+               sdf::SDF::Version() + " reads (versions given: " +
+               (seen.empty() ? "none" : seen) + ")";
+    return "";
+  }
+  const fs::path file = fs::path(model_dir) / best_file;
+  if (!fs::is_regular_file(file, ec)) {
+    *problem = config.string() + ": <sdf version=\"" + std::to_string(best.first) + "." +
+               std::to_string(best.second) + "\"> names " + file.string() +
+               ", which does not exist";
+    return "";
+  }
+  return file.string();
+}
+
+IncludeResolver::IncludeResolver(const UriResolver& resolver, std::string base_dir)
+    : resolver_(resolver), base_dir_(std::move(base_dir)) {}
+
+sdf::ParserConfig IncludeResolver::parserConfig() {
+  sdf::ParserConfig config;
+  config.SetFindCallback([this](const std::string& uri) { return find(uri); });
+  return config;
+}
+
+std::string IncludeResolver::find(const std::string& uri) {
+  if (uri.compare(0, 8, "model://") == 0) return findModelUri(uri);
+  std::vector<std::string> searched;
+  const std::string path = resolver_.resolve(uri, base_dir_, &searched);
+  if (path.empty()) failures_.push_back("<include> <uri>" + uri + "</uri>: no such file");
+  return path;
+}
+
+std::string IncludeResolver::findModelUri(const std::string& uri) {
+  // model://NAME names a model folder, which may sit deeper (model://set/part) as Gazebo
+  // allows; model://NAME/file.sdf names a file in one.
+  const std::string rest = uri.substr(8);
+  std::vector<std::string> searched;
+  std::string dir = resolver_.findModel(rest, &searched);
+  if (dir.empty() && isBuiltin(rest)) dir = (fs::path(builtinModelsDir()) / rest).string();
+  if (dir.empty()) {
+    const std::string file = resolver_.resolve(uri, "");
+    if (!file.empty()) return file;
+    failures_.push_back("<include> <uri>" + uri + "</uri>: model '" + rest +
+                        "' not found in the model folders (GAZEBO_MODEL_PATH): " +
+                        join(searched) + "; built in are only sun and ground_plane");
+    return "";
+  }
+  std::string problem;
+  const std::string file = modelSdfFile(dir, &problem);
+  if (file.empty()) failures_.push_back("<include> <uri>" + uri + "</uri>: " + problem);
+  return file;
+}
+
+}  // namespace bullet_sim

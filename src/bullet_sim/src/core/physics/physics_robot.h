@@ -1,0 +1,100 @@
+#ifndef BULLET_SIM_CORE_PHYSICS_ROBOT_H
+#define BULLET_SIM_CORE_PHYSICS_ROBOT_H
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "bullet_sim/types.h"
+#include "bullet_sim/world/entity_frames.h"
+#include "description/robot_plan.h"
+
+namespace bullet_sim {
+
+/// Per-body data Bullet's contact callback reads: the friction of each child
+/// shape of the body's compound (links merged into one body keep their own mu). A body
+/// of a single shape has no compound: its friction is the rigid body's.
+struct BodyMaterial {
+  int robot_id = -1;
+  std::vector<double> child_friction;
+};
+
+/// The Bullet bodies and hinges of one robot, added to a dynamics world.
+class PhysicsRobot {
+ public:
+  PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPlan plan,
+               const Eigen::Isometry3d& T_world_model);
+  ~PhysicsRobot();
+  PhysicsRobot(const PhysicsRobot&) = delete;
+  PhysicsRobot& operator=(const PhysicsRobot&) = delete;
+
+  /// Moves the robot rigidly so that its root link lands on T_world_root,
+  /// keeping its joint configuration.
+  void moveRoot(const Eigen::Isometry3d& T_world_root, const Twist3& twist);
+
+  Eigen::Isometry3d linkPose(const std::string& link) const;
+  /// World-frame velocity of a link's origin.
+  Twist3 linkTwist(const std::string& link) const;
+  bool hasLink(const std::string& link) const;
+  /// How deep (m, >= 0) any body of the robot reaches into a static body (a wall, the
+  /// ground), from the contacts of the last collision pass.
+  double staticPenetrationM() const;
+
+  const RobotPlan& plan() const { return plan_; }
+  /// Index into plan().joints, or -1.
+  int jointIndex(const std::string& name) const;
+  double jointPosition(size_t joint) const { return joint_angles_[joint]; }
+  double jointVelocity(size_t joint) const;
+  /// Drives a joint at velocity_radps with at most max_torque_nm. The motor
+  /// follows a reference angle that advances at that velocity, so a wheel told
+  /// to stand still holds its angle instead of creeping under load.
+  void setJointMotor(size_t joint, double velocity_radps, double max_torque_nm);
+  /// Puts every hinge at angles_rad (one per plan().joints entry), keeping the root
+  /// link's pose; every body ends at rest.
+  void setJointPositions(const std::vector<double>& angles_rad);
+  /// Adds a wrench (world axes) at the centre of mass of the body holding `link`, for the
+  /// coming step.
+  void applyLinkWrench(const std::string& link, const Wrench& wrench);
+  /// Adds a torque about a hinge's axis (child turned positively, parent the other way),
+  /// for the coming step.
+  void applyJointEffort(size_t joint, double effort_nm);
+  /// Wakes every body of the robot (a sleeping robot is not simulated).
+  void wake();
+  /// Sets every motor's velocity target for the coming physics step of dt_s.
+  void applyMotors(double dt_s);
+  /// Tracks the hinge angles across +-pi; called after every physics step.
+  void updateJointAngles();
+
+ private:
+  struct Body {
+    std::unique_ptr<btCollisionShape> shape;
+    std::vector<std::unique_ptr<btCollisionShape>> children;
+    std::unique_ptr<btRigidBody> rigid;
+    BodyMaterial material;
+    Eigen::Isometry3d T_com_root;  ///< inverse of the plan's T_root_com
+  };
+  void buildBody(const BodyPlan& plan, int robot_id);
+  bool ownsBody(const btCollisionObject* object) const;
+  /// Puts every body where the zero-joint configuration at T_world_model puts it.
+  void placeBodies(const Eigen::Isometry3d& T_world_model);
+  Eigen::Isometry3d T_world_body(size_t body) const;
+  btVector3 jointAxisInWorld(size_t joint) const;
+
+  btDiscreteDynamicsWorld* world_;
+  RobotPlan plan_;
+  std::vector<Body> bodies_;
+  std::vector<std::unique_ptr<btHingeConstraint>> hinges_;
+  std::vector<double> joint_angles_, last_raw_angles_;
+  struct Motor {
+    bool enabled = false;
+    double velocity_radps = 0, max_torque_nm = 0;
+    double reference_rad = 0;  ///< angle the joint should be at
+  };
+  std::vector<Motor> motors_;
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_PHYSICS_ROBOT_H

@@ -1,0 +1,84 @@
+#include "physics/physics_world.h"
+
+#include <algorithm>
+
+#include "description/robot_plan.h"
+#include "physics/bullet_convert.h"
+#include "physics/collision_shapes.h"
+#include "physics/physics_robot.h"
+
+namespace bullet_sim {
+namespace {
+
+/// The friction of the surface a contact touches. A compound body's parts keep their own
+/// links' friction: Bullet hands a contact with a part the part's wrapper, whose index is
+/// the part's. Any other body (a single shape, a static shape) has one friction, its own.
+/// (The part indices Bullet passes beside the wrappers are set only for compounds and
+/// meshes; for two single shapes they are left as they were.)
+double frictionOf(const btCollisionObjectWrapper* w) {
+  const btCollisionObject* obj = w->getCollisionObject();
+  const auto* material = static_cast<const BodyMaterial*>(obj->getUserPointer());
+  if ((obj->getCollisionFlags() & btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK) && material &&
+      obj->getCollisionShape()->isCompound() && w->m_index >= 0 &&
+      w->m_index < static_cast<int>(material->child_friction.size())) {
+    return material->child_friction[w->m_index];
+  }
+  return obj->getFriction();
+}
+
+/// Gazebo's ODE takes the smaller of the two surfaces' coefficients for a contact; Bullet
+/// would multiply them.
+bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int, int,
+                     const btCollisionObjectWrapper* b, int, int) {
+  cp.m_combinedFriction = std::min(frictionOf(a), frictionOf(b));
+  return true;
+}
+
+}  // namespace
+
+bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a,
+                                                            btBroadphaseProxy* b) const {
+  if (!(a->m_collisionFilterGroup & b->m_collisionFilterMask) ||
+      !(b->m_collisionFilterGroup & a->m_collisionFilterMask)) {
+    return false;
+  }
+  const auto* oa = static_cast<const btCollisionObject*>(a->m_clientObject);
+  const auto* ob = static_cast<const btCollisionObject*>(b->m_clientObject);
+  return oa->getUserIndex() < 0 || oa->getUserIndex() != ob->getUserIndex();
+}
+
+PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
+    : config_(std::make_unique<btDefaultCollisionConfiguration>()),
+      dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
+      broadphase_(std::make_unique<btDbvtBroadphase>()),
+      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      world_(std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(),
+                                                        solver_.get(), config_.get())) {
+  gContactAddedCallback = combineFriction;
+  world_->getPairCache()->setOverlapFilterCallback(&filter_);
+  world_->setGravity(toBt(spec.gravity));
+  world_->setForceUpdateAllAabbs(false);
+  for (const StaticShape& s : spec.shapes) {
+    if (!s.collides) continue;
+    shapes_.push_back(makeCollisionShape(s, s.mesh.get(), Motion::Static));
+    auto obj = std::make_unique<btCollisionObject>();
+    obj->setCollisionShape(shapes_.back().get());
+    obj->setWorldTransform(toBt(toIsometry(s.pose)));
+    obj->setFriction(s.friction);
+    obj->setUserIndex(-1);
+    // Bullet recomputes the bounding box of every "active" object each step;
+    // static shapes never move.
+    obj->setActivationState(ISLAND_SLEEPING);
+    world_->addCollisionObject(obj.get(), btBroadphaseProxy::StaticFilter,
+                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    objects_.push_back(std::move(obj));
+  }
+}
+
+PhysicsWorld::~PhysicsWorld() {
+  for (auto& obj : objects_) world_->removeCollisionObject(obj.get());
+}
+
+void PhysicsWorld::step(double dt_s) { world_->stepSimulation(dt_s, 0, dt_s); }
+
+}  // namespace bullet_sim

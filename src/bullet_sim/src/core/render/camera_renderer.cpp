@@ -1,0 +1,383 @@
+#include "bullet_sim/render/camera_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <sim_render/renderer.h>
+
+#include "bullet_sim/errors.h"
+#include "bullet_sim/render/depth_camera.h"
+#include "description/gazebo/camera_lens.h"
+#include "description/robot_plan.h"
+#include "render/lens_camera.h"
+
+namespace bullet_sim {
+namespace {
+
+std::string cameraName(const CameraSpec& camera) {
+  return "camera '" + camera.name + "' on link '" + camera.link + "'";
+}
+
+/// The pinhole model of a camera; for a wide-angle one, a pinhole with the same image and
+/// clip distances, the lens's focal length set by the caller.
+sim_render::CameraModel cameraModel(const CameraSpec& camera) {
+  sim_render::CameraModel model;
+  model.width = camera.width;
+  model.height = camera.height;
+  model.horizontal_fov_rad = camera.lens ? M_PI_2 : camera.horizontal_fov_rad;
+  model.clip_near_m = camera.clip_near_m;
+  model.clip_far_m = camera.clip_far_m;
+  return model;
+}
+
+/// A wide-angle camera's lens maps its hfov and its cube faces can be rendered.
+void validateLens(const CameraSpec& camera) {
+  if (camera.depth) throw std::invalid_argument("a wide-angle camera has no depth");
+  CameraLens(*camera.lens, camera.horizontal_fov_rad);
+  const int size = camera.lens->env_texture_size;
+  if (!(size >= 4 && size <= 2048)) {
+    throw std::invalid_argument("<lens> <env_texture_size>: " + std::to_string(size) +
+                                " is not a pixel count in 4..2048");
+  }
+}
+
+/// World pose of `link` among `poses`; `hint` remembers where it was last time, since the
+/// simulation lists the links in the same order on every call.
+const Pose3* findLink(const std::vector<LinkPose>& poses, const std::string& link, size_t* hint) {
+  if (*hint < poses.size() && poses[*hint].link == link) return &poses[*hint].pose;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    if (poses[i].link == link) {
+      *hint = i;
+      return &poses[i].pose;
+    }
+  }
+  return nullptr;
+}
+
+/// The renderer's triangles of each part of a mesh file, made once per file.
+class MeshTriangles {
+ public:
+  const std::vector<std::shared_ptr<const sim_render::Mesh>>& of(
+      const std::shared_ptr<const TriangleMesh>& mesh) {
+    auto [it, inserted] = parts_.try_emplace(mesh);
+    if (inserted) {
+      for (const MeshPart& part : mesh->parts) {
+        auto triangles = std::make_shared<sim_render::Mesh>();
+        triangles->vertices = part.vertices;
+        triangles->triangles = part.triangles;
+        triangles->uvs = part.uvs;
+        it->second.push_back(std::move(triangles));
+      }
+    }
+    return it->second;
+  }
+
+ private:
+  std::map<std::shared_ptr<const TriangleMesh>,
+           std::vector<std::shared_ptr<const sim_render::Mesh>>> parts_;
+};
+
+/// Texture images, each file decoded once (OpenCV) and shared by every shape showing it.
+class TextureImages {
+ public:
+  explicit TextureImages(std::vector<std::string>* warnings) : warnings_(warnings) {}
+
+  /// The image in `path`, or null (with one warning naming the file) when it cannot be read.
+  std::shared_ptr<const sim_render::Texture> load(const std::string& path) {
+    if (path.empty()) return nullptr;
+    auto [it, inserted] = images_.try_emplace(path);
+    if (!inserted) return it->second;
+    const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
+    if (bgr.empty()) {
+      warnings_->push_back("texture " + path + ": cannot read the image: drawn in its colour");
+      return nullptr;
+    }
+    cv::Mat rgb;
+    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+    std::vector<uint8_t> bytes(rgb.total() * 3);
+    for (int row = 0; row < rgb.rows; ++row) {
+      std::copy(rgb.ptr<uint8_t>(row), rgb.ptr<uint8_t>(row) + rgb.cols * 3,
+                bytes.begin() + static_cast<size_t>(row) * rgb.cols * 3);
+    }
+    it->second = std::make_shared<const sim_render::Texture>(rgb.cols, rgb.rows, std::move(bytes));
+    return it->second;
+  }
+
+  void warn(const std::string& message) { warnings_->push_back(message); }
+
+ private:
+  std::vector<std::string>* warnings_;
+  std::map<std::string, std::shared_ptr<const sim_render::Texture>> images_;
+};
+
+/// What the renderer needs to draw shapes: mesh triangles and texture images, made once.
+struct ShapeSources {
+  MeshTriangles triangles;
+  TextureImages textures;
+  std::set<std::string> missing_reported;  ///< mesh files whose missing texture was named
+};
+
+/// The renderer's shapes of a geometry in colour `rgba` (with the material's `texture`, if
+/// any): one for a primitive; for a mesh, whose triangles `mesh` holds, one per part, a
+/// part without a colour of its own taking `rgba`, a part with a texture of its own showing
+/// it unshaded by any colour. A mesh that could not be read (null) has none: the loader
+/// already warned.
+std::vector<sim_render::ShapeSpec> shapesOf(const Geometry& geometry,
+                                            const std::shared_ptr<const TriangleMesh>& mesh,
+                                            const Eigen::Vector4f& rgba, const TextureRef& texture,
+                                            ShapeSources* sources) {
+  if (geometry.kind != Geometry::Mesh) {
+    sim_render::ShapeSpec shape(geometry, rgba);
+    shape.texture = sources->textures.load(texture.path);
+    shape.uv_transform.scale = texture.uv_scale;
+    shape.uv_transform.offset = texture.uv_offset;
+    return {shape};
+  }
+  std::vector<sim_render::ShapeSpec> shapes;
+  if (!mesh) return shapes;
+  const auto& parts = sources->triangles.of(mesh);
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const MeshPart& file_part = mesh->parts[i];
+    sim_render::ShapeSpec part(geometry, file_part.rgba.value_or(rgba));
+    part.triangles = parts[i];
+    if (!file_part.missing_texture.empty() &&
+        sources->missing_reported.insert(mesh->path + file_part.missing_texture).second) {
+      sources->textures.warn(mesh->path + ": texture '" + file_part.missing_texture +
+                             "' not found beside the mesh or in ../materials/textures: "
+                             "drawn in its colour");
+    }
+    if (!file_part.texture_path.empty()) {
+      part.texture = sources->textures.load(file_part.texture_path);
+      if (part.texture) part.rgba = Eigen::Vector4f::Ones();
+    }
+    shapes.push_back(std::move(part));
+  }
+  return shapes;
+}
+
+void toMono(const std::vector<uint8_t>& rgb, std::vector<uint8_t>* mono) {
+  mono->resize(rgb.size() / 3);
+  for (size_t i = 0; i < mono->size(); ++i) {
+    const double y = 0.299 * rgb[3 * i] + 0.587 * rgb[3 * i + 1] + 0.114 * rgb[3 * i + 2];
+    (*mono)[i] = static_cast<uint8_t>(std::lround(std::min(255.0, y)));
+  }
+}
+
+}  // namespace
+
+std::string imageEncoding(const CameraSpec& camera) {
+  if (camera.format == "R8G8B8") return "rgb8";
+  if (camera.format == "B8G8R8") return "bgr8";
+  if (camera.format == "L8") return "mono8";
+  throw LoadError(cameraName(camera) + ": <image><format> '" + camera.format +
+                  "' is not supported (R8G8B8, B8G8R8 or L8)");
+}
+
+void validateCamera(const CameraSpec& camera) {
+  try {
+    cameraModel(camera).validate();
+    if (camera.lens) validateLens(camera);
+  } catch (const std::invalid_argument& e) {
+    throw LoadError(cameraName(camera) + ": " + e.what());
+  }
+  imageEncoding(camera);
+}
+
+CameraInfoData cameraInfo(const CameraSpec& camera, double time_s) {
+  const sim_render::CameraModel model = cameraModel(camera);
+  CameraInfoData info;
+  info.time_s = time_s;
+  info.frame_id = camera.frame_id;
+  info.width = camera.width;
+  info.height = camera.height;
+  info.K = model.K();
+  info.P = model.P();
+  if (camera.lens) {
+    const double f_px = CameraLens(*camera.lens, camera.horizontal_fov_rad).paraxialFocalPx(
+        camera.width);
+    info.K[0] = info.K[4] = info.P[0] = info.P[5] = f_px;
+  }
+  return info;
+}
+
+struct CameraRenderer::Impl {
+  /// A robot visual in the scene and the link that carries it.
+  struct Visual {
+    std::string link;
+    size_t link_hint = 0;
+    Eigen::Isometry3d T_link_visual;
+    sim_render::ShapeId id = 0;
+  };
+  struct RobotScene {
+    int spawn_generation = -1;  ///< tells a respawned robot of the same name apart
+    std::vector<Visual> visuals;
+    std::vector<std::unique_ptr<sim_render::Renderer>> renderers;  ///< per camera, lazily
+    std::vector<std::unique_ptr<LensCamera>> lens_cameras;  ///< per wide-angle camera, lazily
+    std::vector<size_t> camera_link_hints;
+  };
+
+  explicit Impl(const Simulation& s) : sim(s) {
+    const WorldSpec& world = sim.world();
+    scene.lighting().direction = world.light_direction;
+    scene.lighting().ambient = world.ambient.head<3>();
+    for (const StaticShape& s : world.shapes) {
+      for (const sim_render::ShapeSpec& spec : shapesOf(s, s.mesh, s.rgba, s.texture, &sources)) {
+        try {
+          scene.add(spec, toIsometry(s.pose));
+        } catch (const std::invalid_argument& e) {
+          warnings.push_back("world shape of model '" + s.model + "' link '" + s.link +
+                             "' not drawn: " + e.what());
+        }
+      }
+    }
+  }
+
+  void addRobot(const std::string& name, const RobotSpec& spec, RobotScene* robot) {
+    robot->spawn_generation = sim.spawnGeneration(name);
+    robot->renderers.resize(spec.cameras.size());
+    robot->lens_cameras.resize(spec.cameras.size());
+    robot->camera_link_hints.assign(spec.cameras.size(), 0);
+    for (const VisualSpec& v : spec.visuals) {
+      const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
+      for (const sim_render::ShapeSpec& shape : shapesOf(v, v.mesh, v.rgba, v.texture, &sources)) {
+        try {
+          robot->visuals.push_back({v.link, 0, T_link_visual, scene.add(shape, T_link_visual)});
+        } catch (const std::invalid_argument& e) {
+          warnings.push_back("robot '" + name + "' link '" + v.link + "': visual not drawn: " +
+                             e.what());
+        }
+      }
+    }
+  }
+
+  void dropRobot(RobotScene* robot) {
+    for (const Visual& v : robot->visuals) scene.remove(v.id);
+    robot->visuals.clear();
+  }
+
+  /// Brings the scene's robots in line with the simulation's.
+  void syncRobots() {
+    const std::vector<std::string> names = sim.robotNames();
+    const std::set<std::string> alive(names.begin(), names.end());
+    for (auto it = robots.begin(); it != robots.end();) {
+      if (alive.count(it->first) == 0) {
+        dropRobot(&it->second);
+        it = robots.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    for (const std::string& name : names) {
+      auto it = robots.find(name);
+      if (it != robots.end() && it->second.spawn_generation == sim.spawnGeneration(name)) {
+        continue;
+      }
+      if (it != robots.end()) {
+        dropRobot(&it->second);
+        robots.erase(it);
+      }
+      addRobot(name, sim.robotSpec(name), &robots[name]);
+    }
+  }
+
+  /// Moves every robot's visuals to their links' current poses.
+  void poseRobots(const std::string& camera_robot) {
+    for (auto& [name, robot] : robots) {
+      std::vector<LinkPose>& poses = name == camera_robot ? camera_robot_poses : other_poses;
+      poses = sim.linkPoses(name);
+      for (Visual& v : robot.visuals) {
+        const Pose3* link = findLink(poses, v.link, &v.link_hint);
+        if (link) scene.setPose(v.id, toIsometry(*link) * v.T_link_visual);
+      }
+    }
+  }
+
+  const Simulation& sim;
+  sim_render::Scene scene;
+  std::map<std::string, RobotScene> robots;
+  std::vector<std::string> warnings;
+  ShapeSources sources{MeshTriangles(), TextureImages(&warnings), {}};
+  std::vector<LinkPose> camera_robot_poses, other_poses;
+  std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
+};
+
+CameraRenderer::CameraRenderer(const Simulation& sim) : impl_(std::make_unique<Impl>(sim)) {}
+
+CameraRenderer::~CameraRenderer() = default;
+
+const std::vector<std::string>& CameraRenderer::warnings() const { return impl_->warnings; }
+
+void CameraRenderer::render(const std::string& robot, size_t index, ImageData* image,
+                            DepthImageData* depth) {
+  const RobotSpec& spec = impl_->sim.robotSpec(robot);
+  if (index >= spec.cameras.size()) {
+    throw std::out_of_range("robot '" + robot + "' has no camera " + std::to_string(index) +
+                            " (it has " + std::to_string(spec.cameras.size()) + ")");
+  }
+  const CameraSpec& camera = spec.cameras[index];
+  if (depth && !camera.depth) {
+    throw std::invalid_argument(cameraName(camera) + " of robot '" + robot +
+                                "' is not a depth camera");
+  }
+  impl_->syncRobots();
+  Impl::RobotScene& scene_robot = impl_->robots.at(robot);
+  std::unique_ptr<sim_render::Renderer>& renderer = scene_robot.renderers[index];
+  std::unique_ptr<LensCamera>& lens_camera = scene_robot.lens_cameras[index];
+  if (!renderer && !lens_camera) {
+    validateCamera(camera);
+    if (camera.lens) {
+      lens_camera = std::make_unique<LensCamera>(camera);
+    } else {
+      renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
+    }
+  }
+  impl_->poseRobots(robot);
+  const Pose3* link =
+      findLink(impl_->camera_robot_poses, camera.link, &scene_robot.camera_link_hints[index]);
+  if (!link) throw LoadError(cameraName(camera) + " of robot '" + robot + "': no such link");
+  const Eigen::Isometry3d T_world_camera = toIsometry(*link) * toIsometry(camera.pose_in_link);
+
+  image->time_s = impl_->sim.timeS();
+  image->frame_id = camera.frame_id;
+  image->width = camera.width;
+  image->height = camera.height;
+  image->encoding = imageEncoding(camera);
+  const bool rgb8 = image->encoding == "rgb8";
+  std::vector<uint8_t>& rgb = rgb8 ? image->data : impl_->rgb;
+  if (lens_camera) {
+    lens_camera->render(impl_->scene, T_world_camera, rgb);
+  } else {
+    renderer->render(impl_->scene, T_world_camera, rgb);
+  }
+  if (depth) {
+    depth->time_s = image->time_s;
+    depth->frame_id = camera.frame_id;
+    depth->width = camera.width;
+    depth->height = camera.height;
+    renderer->depthImage(&depth->depth_m, static_cast<float>(camera.depth->cutoff_m),
+                         static_cast<float>(camera.depth->cutoff_max_m));
+  }
+  if (rgb8) {
+    image->step = 3 * camera.width;
+    return;
+  }
+  if (image->encoding == "mono8") {
+    toMono(impl_->rgb, &image->data);
+    image->step = camera.width;
+    return;
+  }
+  image->data.resize(impl_->rgb.size());
+  for (size_t i = 0; i + 2 < impl_->rgb.size(); i += 3) {
+    image->data[i] = impl_->rgb[i + 2];
+    image->data[i + 1] = impl_->rgb[i + 1];
+    image->data[i + 2] = impl_->rgb[i];
+  }
+  image->step = 3 * camera.width;
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,32 @@
+#ifndef BULLET_SIM_CORE_RAY_SENSOR_H
+#define BULLET_SIM_CORE_RAY_SENSOR_H
+
+#include <cstddef>
+#include <random>
+
+#include <btBulletCollisionCommon.h>
+#include <Eigen/Geometry>
+
+#include "bullet_sim/description/robot_spec.h"
+#include "bullet_sim/sensors/sensor_data.h"
+
+namespace bullet_sim {
+
+/// Casts one planar scan as Gazebo's ray sensor does: rays lie in the sensor's
+/// x-y plane, angle 0 is +x and angles grow counter-clockwise; each ray starts
+/// at range_min (so the robot's own parts nearer than that are not seen);
+/// nothing within range_max reads +inf; hits get gaussian noise, are rounded
+/// to the range resolution and clamped to [range_min, range_max].
+///
+/// The shapes within range_max are listed once per scan for the rays in whose directions
+/// they lie, so each ray tests only those. With more than `max_listed_parts` shapes in
+/// range (compounds counted by their children), or with 0, each ray walks Bullet's
+/// broadphase tree instead; both give the same ranges.
+constexpr size_t kMaxListedScanParts = 512;
+void castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
+              const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
+              size_t max_listed_parts = kMaxListedScanParts);
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_RAY_SENSOR_H

@@ -1,0 +1,78 @@
+#include "sensors/sensor_schedule.h"
+
+#include <cmath>
+
+namespace bullet_sim {
+namespace {
+
+/// FNV-1a: a hash that is the same on every build, unlike std::hash.
+uint64_t stableHash(const std::string& s) {
+  uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace
+
+std::mt19937_64 sensorRng(uint64_t seed, const std::string& robot, const std::string& sensor) {
+  const uint64_t parts[3] = {seed, stableHash(robot), stableHash(sensor)};
+  std::seed_seq seq{static_cast<uint32_t>(parts[0]), static_cast<uint32_t>(parts[0] >> 32),
+                    static_cast<uint32_t>(parts[1]), static_cast<uint32_t>(parts[1] >> 32),
+                    static_cast<uint32_t>(parts[2]), static_cast<uint32_t>(parts[2] >> 32)};
+  return std::mt19937_64(seq);
+}
+
+bool periodElapsed(uint64_t k, double dt_s, double rate_hz) {
+  if (rate_hz <= 0) return true;
+  constexpr double kEps = 1e-9;  // absorbs rounding when the rate divides the step
+  const double periods_now = static_cast<double>(k) * dt_s * rate_hz + kEps;
+  const double periods_before = (static_cast<double>(k) - 1.0) * dt_s * rate_hz + kEps;
+  return std::floor(periods_now) > std::floor(periods_before);
+}
+
+SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
+                               double joint_state_rate_hz)
+    : robot_(robot) {
+  for (size_t i = 0; i < spec.rays.size(); ++i) {
+    entries_.push_back({SensorKind::Ray, i, spec.rays[i].update_rate_hz});
+  }
+  for (size_t i = 0; i < spec.imus.size(); ++i) {
+    entries_.push_back({SensorKind::Imu, i, spec.imus[i].update_rate_hz});
+  }
+  for (size_t i = 0; i < spec.cameras.size(); ++i) {
+    entries_.push_back({SensorKind::Camera, i, spec.cameras[i].update_rate_hz});
+  }
+  if (spec.diff_drive) {
+    drive_rate_hz_ = spec.diff_drive->update_rate_hz;
+    entries_.push_back({SensorKind::Odometry, 0, drive_rate_hz_});
+  }
+  entries_.push_back({SensorKind::JointStates, 0, joint_state_rate_hz});
+}
+
+void SensorSchedule::collectDue(uint64_t k, double dt_s, std::vector<DueSensor>* due) const {
+  for (const Entry& e : entries_) {
+    if (k > e.origin && periodElapsed(k - e.origin, dt_s, e.rate_hz)) {
+      due->push_back({robot_, e.kind, e.index});
+    }
+  }
+}
+
+void SensorSchedule::startAfter(uint64_t spawn_step, double dt_s) {
+  for (Entry& e : entries_) {
+    if (e.kind != SensorKind::Ray && e.kind != SensorKind::Camera) continue;
+    if (e.rate_hz <= 0) continue;  // every step anyway
+    // The first step whose period ends, counted from step 0.
+    uint64_t first = 1;
+    while (!periodElapsed(first, dt_s, e.rate_hz)) ++first;
+    e.origin = spawn_step + 1 > first ? spawn_step + 1 - first : 0;
+  }
+}
+
+void SensorSchedule::restart() {
+  for (Entry& e : entries_) e.origin = 0;
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,31 @@
+#include "runner/pacer.h"
+
+#include <thread>
+
+namespace bullet_sim_node {
+
+Pacer::Pacer(double real_time_factor) : real_time_factor_(real_time_factor) { restart(0); }
+
+void Pacer::restart(double sim_time_s) {
+  anchor_wall_ = Clock::now();
+  anchor_sim_s_ = sim_time_s;
+  last_sim_s_ = sim_time_s;
+}
+
+void Pacer::setRealTimeFactor(double real_time_factor, double sim_time_s) {
+  real_time_factor_ = real_time_factor;
+  restart(sim_time_s);
+}
+
+void Pacer::waitUntil(double sim_time_s) {
+  if (real_time_factor_ <= 0) return;
+  if (sim_time_s < last_sim_s_) restart(sim_time_s);
+  last_sim_s_ = sim_time_s;
+  const std::chrono::duration<double> wall_offset((sim_time_s - anchor_sim_s_) /
+                                                  real_time_factor_);
+  const Clock::time_point target =
+      anchor_wall_ + std::chrono::duration_cast<Clock::duration>(wall_offset);
+  if (target > Clock::now()) std::this_thread::sleep_until(target);
+}
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,102 @@
+#include "runner/sim_runner.h"
+
+#include "topics/tf_prefix.h"
+
+#include <malloc.h>
+
+#include <ros/console.h>
+#include <rosgraph_msgs/Clock.h>
+
+namespace bullet_sim_node {
+namespace {
+
+// /clock goes out at most this often in wall time between sensor readings: enough for
+// nodes that sleep on sim time, and cheap when the simulation runs 100x real time.
+constexpr std::chrono::milliseconds kClockWallPeriod{1};
+
+}  // namespace
+
+SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
+                     const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz)
+    : sim_(sim),
+      nh_(nh),
+      cameras_(sim, queue_),
+      state_topics_(sim, queue_, gazebo_nh, model_states_rate_hz),
+      paused_(paused) {
+  clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+}
+
+void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
+                      const bullet_sim::Pose3& pose, const std::string& robot_namespace) {
+  // The namespace first: an invalid one throws before the simulation holds the robot.
+  const ros::NodeHandle robot_nh(nh_, robot_namespace);
+  sim_.spawnRobot(name, spec, pose);
+  logSimulationWarnings();
+  try {
+    const std::string tf_prefix = findTfPrefix(robot_nh);
+    robots_[name] = std::make_unique<RobotIo>(sim_, queue_, name, robot_nh, tf_prefix);
+    cameras_.addRobot(name, robot_nh, tf_prefix);
+    if (!tf_prefix.empty()) {
+      ROS_INFO("model %s: topics in %s, frames under tf_prefix '%s'", name.c_str(),
+               robot_nh.getNamespace().c_str(), tf_prefix.c_str());
+    }
+  } catch (const ros::InvalidNameException&) {  // a topic name of the robot's Gazebo tags
+    robots_.erase(name);
+    cameras_.removeRobot(name);
+    sim_.deleteRobot(name);
+    throw;
+  }
+  spawn_poses_[name] = pose;
+  releaseParserMemory();
+}
+
+void releaseParserMemory() {
+  // Parsing a model or world (urdfdom, libsdformat's element trees) frees tens of
+  // megabytes in small blocks that glibc keeps for reuse; the simulation never needs
+  // them again, so they go back to the system.
+  malloc_trim(0);
+}
+
+bool SimRunner::remove(const std::string& name) {
+  if (!sim_.deleteRobot(name)) return false;
+  robots_.erase(name);
+  cameras_.removeRobot(name);
+  spawn_poses_.erase(name);
+  return true;
+}
+
+const bullet_sim::Pose3& SimRunner::spawnPose(const std::string& name) const {
+  return spawn_poses_.at(name);
+}
+
+void SimRunner::step() {
+  // The step's messages wake the publishing thread once, when they are all queued.
+  const PublishQueue::Batch batch(queue_);
+  const std::vector<bullet_sim::DueSensor> due = sim_.step();
+  const auto now = std::chrono::steady_clock::now();
+  // A reading stamped t goes out after the clock says t, so no listener sees the future.
+  if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
+  for (const bullet_sim::DueSensor& sensor : due) {
+    if (sensor.kind == bullet_sim::SensorKind::Camera) {
+      cameras_.publish(sensor);
+      continue;
+    }
+    const auto robot = robots_.find(sensor.robot);
+    if (robot != robots_.end()) robot->second->publish(sensor);
+  }
+  state_topics_.update();
+  logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
+}
+
+void SimRunner::logSimulationWarnings() {
+  for (const std::string& warning : sim_.takeWarnings()) ROS_WARN("%s", warning.c_str());
+}
+
+void SimRunner::publishClock() {
+  rosgraph_msgs::Clock clock;
+  clock.clock.fromSec(sim_.timeS());
+  queue_.publish(clock_pub_, clock);
+  last_clock_wall_ = std::chrono::steady_clock::now();
+}
+
+}  // namespace bullet_sim_node

@@ -1,0 +1,132 @@
+#include "topics/camera_io.h"
+
+#include "topics/tf_prefix.h"
+
+#include <bullet_sim/errors.h>
+
+#include <ros/console.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+
+#include <boost/make_shared.hpp>
+
+#include <algorithm>
+#include <exception>
+
+namespace bullet_sim_node {
+namespace {
+
+// Outgoing messages kept per subscriber. An image is 0.9 MB at 640 x 480: a few absorb a
+// short stall of a subscriber; one that falls further behind loses frames, not memory.
+constexpr uint32_t kImageQueueSize = 5;
+constexpr uint32_t kInfoQueueSize = 50;
+
+sensor_msgs::ImagePtr toMsg(bullet_sim::ImageData* image) {
+  auto msg = boost::make_shared<sensor_msgs::Image>();
+  msg->header.stamp.fromSec(image->time_s);
+  msg->header.frame_id = image->frame_id;
+  msg->width = static_cast<uint32_t>(image->width);
+  msg->height = static_cast<uint32_t>(image->height);
+  msg->encoding = image->encoding;
+  msg->is_bigendian = 0;
+  msg->step = static_cast<uint32_t>(image->step);
+  msg->data.swap(image->data);
+  return msg;
+}
+
+}  // namespace
+
+std::string cameraTopic(const std::string& camera_name, const std::string& topic) {
+  return camera_name.empty() ? topic : camera_name + "/" + topic;
+}
+
+sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
+                                 const std::string& frame_id) {
+  auto msg = boost::make_shared<sensor_msgs::CameraInfo>();
+  msg->header.stamp.fromSec(info.time_s);
+  msg->header.frame_id = frame_id;
+  msg->width = static_cast<uint32_t>(info.width);
+  msg->height = static_cast<uint32_t>(info.height);
+  msg->distortion_model = info.distortion_model;
+  msg->D.assign(info.D.begin(), info.D.end());
+  std::copy(info.K.begin(), info.K.end(), msg->K.begin());
+  std::copy(info.R.begin(), info.R.end(), msg->R.begin());
+  std::copy(info.P.begin(), info.P.end(), msg->P.begin());
+  return msg;
+}
+
+CameraIo::CameraIo(const bullet_sim::Simulation& sim, PublishQueue& queue)
+    : sim_(sim), queue_(queue), renderer_(sim), depth_(queue) {
+  logNewRendererWarnings();
+}
+
+void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_nh,
+                        const std::string& tf_prefix) {
+  ros::NodeHandle nh(robot_nh);
+  std::vector<Topics>& topics = cameras_[robot];
+  topics.clear();
+  for (const bullet_sim::CameraSpec& camera : sim_.robotSpec(robot).cameras) {
+    topics.emplace_back();
+    topics.back().frame_id = resolveFrame(tf_prefix, camera.frame_id);
+    try {
+      bullet_sim::validateCamera(camera);
+    } catch (const bullet_sim::LoadError& error) {
+      ROS_ERROR("robot %s: %s: not published", robot.c_str(), error.what());
+      continue;
+    }
+    topics.back().image = CountedPublisher::advertise<sensor_msgs::Image>(
+        nh, cameraTopic(camera.camera_name, camera.image_topic), kImageQueueSize);
+    topics.back().info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(
+        nh, cameraTopic(camera.camera_name, camera.info_topic), kInfoQueueSize);
+    if (camera.depth) {
+      depth_.addCamera(robot, topics.size() - 1, camera, nh, topics.back().frame_id);
+    }
+  }
+}
+
+void CameraIo::removeRobot(const std::string& robot) {
+  cameras_.erase(robot);
+  depth_.removeRobot(robot);
+}
+
+void CameraIo::publish(const bullet_sim::DueSensor& due) {
+  const auto robot = cameras_.find(due.robot);
+  if (robot == cameras_.end() || due.index >= robot->second.size()) return;
+  Topics& topics = robot->second[due.index];
+  const bool image_wanted = topics.image.hasSubscribers();
+  const bool info_wanted = topics.info.hasSubscribers();
+  const bool depth_wanted = depth_.depthWanted(due.robot, due.index);
+  if (!image_wanted && !info_wanted && !depth_wanted && !depth_.infoWanted(due.robot, due.index)) {
+    return;
+  }
+  const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
+  if (info_wanted) {
+    queue_.publish(topics.info.publisher(),
+                   toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
+  }
+  depth_.publishInfo(due.robot, due.index, camera, sim_.timeS());
+  if (!image_wanted && !depth_wanted) return;
+  try {
+    bullet_sim::ImageData frame;
+    bullet_sim::DepthImageData depth;
+    renderer_.render(due.robot, due.index, &frame, depth_wanted ? &depth : nullptr);
+    // The cloud takes its colours from the frame before the image message takes its bytes.
+    if (depth_wanted) depth_.publish(due.robot, due.index, camera, &depth, frame);
+    if (!image_wanted) return;
+    sensor_msgs::ImagePtr image = toMsg(&frame);
+    image->header.frame_id = topics.frame_id;
+    queue_.publish(topics.image.publisher(), std::move(image));
+  } catch (const std::exception& error) {
+    ROS_ERROR_THROTTLE(5.0, "robot %s: camera '%s' not rendered: %s", due.robot.c_str(),
+                       camera.name.c_str(), error.what());
+  }
+  logNewRendererWarnings();
+}
+
+void CameraIo::logNewRendererWarnings() {
+  const std::vector<std::string>& warnings = renderer_.warnings();
+  for (; warnings_logged_ < warnings.size(); ++warnings_logged_)
+    ROS_WARN("camera: %s", warnings[warnings_logged_].c_str());
+}
+
+}  // namespace bullet_sim_node

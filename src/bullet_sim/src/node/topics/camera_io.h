@@ -1,0 +1,67 @@
+// The ROS side of the simulated cameras: image and camera_info publishers of every robot.
+#pragma once
+
+#include <bullet_sim/render/camera_renderer.h>
+#include <bullet_sim/simulation.h>
+
+#include "topics/counted_publisher.h"
+#include "topics/depth_camera_io.h"
+#include "topics/publish_queue.h"
+
+#include <ros/node_handle.h>
+#include <ros/publisher.h>
+#include <sensor_msgs/CameraInfo.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace bullet_sim_node {
+
+/// `topic` under the camera's <cameraName> namespace, as Gazebo's camera plugins put it.
+std::string cameraTopic(const std::string& camera_name, const std::string& topic);
+/// The camera_info message of `info`, with `frame_id` (tf_prefix applied).
+sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
+                                 const std::string& frame_id);
+
+/// Publishes `<cameraName>/<imageTopicName>` (sensor_msgs/Image) and
+/// `<cameraName>/<cameraInfoTopicName>` (sensor_msgs/CameraInfo) for each camera of each
+/// robot when the simulation says it is due, stamped with sim time. A frame is rendered
+/// only while someone subscribes to the image, camera_info is filled only while someone
+/// subscribes to it: cameras nobody watches cost nothing. One renderer (one scene with
+/// every robot) serves all cameras. A depth camera's frame is rendered once for its
+/// colour image and its depth topics (DepthCameraIo) alike.
+class CameraIo {
+ public:
+  /// `sim` and `queue` (which the messages leave through) must outlive this object.
+  CameraIo(const bullet_sim::Simulation& sim, PublishQueue& queue);
+  CameraIo(const CameraIo&) = delete;
+  CameraIo& operator=(const CameraIo&) = delete;
+
+  /// Advertises the topics of a spawned robot's cameras, resolved in `robot_nh`; their
+  /// frame ids go under `tf_prefix`. A camera the renderer cannot draw (bad size, fov or
+  /// format) is reported and left out.
+  void addRobot(const std::string& robot, const ros::NodeHandle& robot_nh,
+                const std::string& tf_prefix);
+  void removeRobot(const std::string& robot);
+
+  /// Publishes a due camera (due.kind == SensorKind::Camera) if it is watched.
+  void publish(const bullet_sim::DueSensor& due);
+
+ private:
+  struct Topics {
+    CountedPublisher image, info;
+    std::string frame_id;
+  };
+
+  void logNewRendererWarnings();
+
+  const bullet_sim::Simulation& sim_;
+  PublishQueue& queue_;
+  bullet_sim::CameraRenderer renderer_;
+  DepthCameraIo depth_;  ///< the depth topics of the depth cameras among them
+  std::map<std::string, std::vector<Topics>> cameras_;  ///< per robot, by camera index
+  size_t warnings_logged_ = 0;
+};
+
+}  // namespace bullet_sim_node

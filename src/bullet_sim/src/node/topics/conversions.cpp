@@ -1,0 +1,162 @@
+#include "topics/conversions.h"
+
+#include <cmath>
+
+namespace bullet_sim_node {
+namespace {
+
+geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
+  geometry_msgs::Vector3 msg;
+  msg.x = v.x();
+  msg.y = v.y();
+  msg.z = v.z();
+  return msg;
+}
+
+geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q) {
+  geometry_msgs::Quaternion msg;
+  msg.w = q.w();
+  msg.x = q.x();
+  msg.y = q.y();
+  msg.z = q.z();
+  return msg;
+}
+
+void setDiagonal(boost::array<double, 9>& covariance, double variance) {
+  covariance.fill(0.0);
+  covariance[0] = covariance[4] = covariance[8] = variance;
+}
+
+}  // namespace
+
+geometry_msgs::Pose toMsg(const bullet_sim::Pose3& pose) {
+  geometry_msgs::Pose msg;
+  msg.position.x = pose.position.x();
+  msg.position.y = pose.position.y();
+  msg.position.z = pose.position.z();
+  msg.orientation = toQuaternion(pose.orientation);
+  return msg;
+}
+
+geometry_msgs::Twist toMsg(const bullet_sim::Twist3& twist) {
+  geometry_msgs::Twist msg;
+  msg.linear = toVector3(twist.linear);
+  msg.angular = toVector3(twist.angular);
+  return msg;
+}
+
+bullet_sim::Pose3 fromMsg(const geometry_msgs::Pose& pose) {
+  bullet_sim::Pose3 result;
+  result.position = {pose.position.x, pose.position.y, pose.position.z};
+  const Eigen::Quaterniond q(pose.orientation.w, pose.orientation.x, pose.orientation.y,
+                             pose.orientation.z);
+  result.orientation = q.norm() > 1e-9 ? q.normalized() : Eigen::Quaterniond::Identity();
+  return result;
+}
+
+bullet_sim::Twist3 fromMsg(const geometry_msgs::Twist& twist) {
+  bullet_sim::Twist3 result;
+  result.linear = {twist.linear.x, twist.linear.y, twist.linear.z};
+  result.angular = {twist.angular.x, twist.angular.y, twist.angular.z};
+  return result;
+}
+
+sensor_msgs::LaserScan toMsg(const bullet_sim::LaserScanData& scan) {
+  sensor_msgs::LaserScan msg;
+  msg.header.stamp.fromSec(scan.time_s);
+  msg.header.frame_id = scan.frame_id;
+  msg.angle_min = scan.angle_min;
+  msg.angle_max = scan.angle_max;
+  msg.angle_increment = scan.angle_increment;
+  msg.time_increment = scan.time_increment;
+  msg.scan_time = scan.scan_time;
+  msg.range_min = scan.range_min;
+  msg.range_max = scan.range_max;
+  msg.ranges = scan.ranges;
+  msg.intensities = scan.intensities;
+  return msg;
+}
+
+sensor_msgs::Imu toMsg(const bullet_sim::ImuData& imu) {
+  sensor_msgs::Imu msg;
+  msg.header.stamp.fromSec(imu.time_s);
+  msg.header.frame_id = imu.frame_id;
+  msg.orientation = toQuaternion(imu.orientation);
+  msg.angular_velocity = toVector3(imu.angular_velocity);
+  msg.linear_acceleration = toVector3(imu.linear_acceleration);
+  setDiagonal(msg.orientation_covariance, imu.orientation_cov);
+  setDiagonal(msg.angular_velocity_covariance, imu.angular_velocity_cov);
+  setDiagonal(msg.linear_acceleration_covariance, imu.linear_acceleration_cov);
+  return msg;
+}
+
+nav_msgs::Odometry toMsg(const bullet_sim::OdometryData& odom) {
+  nav_msgs::Odometry msg;
+  msg.header.stamp.fromSec(odom.time_s);
+  msg.header.frame_id = odom.frame_id;
+  msg.child_frame_id = odom.child_frame_id;
+  msg.pose.pose = toMsg(odom.pose);
+  msg.twist.twist = toMsg(odom.twist_in_child);
+  return msg;
+}
+
+sensor_msgs::JointState toMsg(const bullet_sim::JointStateData& joints) {
+  sensor_msgs::JointState msg;
+  msg.header.stamp.fromSec(joints.time_s);
+  msg.name = joints.names;
+  msg.position = joints.positions;
+  msg.velocity = joints.velocities;
+  msg.effort = joints.efforts;
+  return msg;
+}
+
+geometry_msgs::TransformStamped toTransformMsg(const bullet_sim::OdometryData& odom) {
+  geometry_msgs::TransformStamped msg;
+  msg.header.stamp.fromSec(odom.time_s);
+  msg.header.frame_id = odom.frame_id;
+  msg.child_frame_id = odom.child_frame_id;
+  msg.transform.translation.x = odom.pose.position.x();
+  msg.transform.translation.y = odom.pose.position.y();
+  msg.transform.translation.z = odom.pose.position.z();
+  msg.transform.rotation = toQuaternion(odom.pose.orientation);
+  return msg;
+}
+
+Eigen::Vector3d fromMsg(const geometry_msgs::Vector3& vector) {
+  return Eigen::Vector3d(vector.x, vector.y, vector.z);
+}
+
+std::optional<std::string> firstNonFinite(const geometry_msgs::Vector3& vector,
+                                          const std::string& name) {
+  const std::pair<const char*, double> fields[] = {{"x", vector.x}, {"y", vector.y}, {"z", vector.z}};
+  for (const auto& field : fields) {
+    if (!std::isfinite(field.second)) {
+      return name + "." + field.first + " = " + std::to_string(field.second);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> firstNonFinite(const geometry_msgs::Pose& pose) {
+  geometry_msgs::Vector3 position;
+  position.x = pose.position.x;
+  position.y = pose.position.y;
+  position.z = pose.position.z;
+  if (auto bad = firstNonFinite(position, "position")) return bad;
+  const std::pair<const char*, double> fields[] = {
+      {"x", pose.orientation.x}, {"y", pose.orientation.y}, {"z", pose.orientation.z},
+      {"w", pose.orientation.w}};
+  for (const auto& field : fields) {
+    if (!std::isfinite(field.second)) {
+      return std::string("orientation.") + field.first + " = " + std::to_string(field.second);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> firstNonFinite(const geometry_msgs::Twist& twist) {
+  if (auto bad = firstNonFinite(twist.linear, "linear")) return bad;
+  return firstNonFinite(twist.angular, "angular");
+}
+
+}  // namespace bullet_sim_node

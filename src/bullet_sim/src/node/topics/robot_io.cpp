@@ -1,0 +1,114 @@
+#include "topics/robot_io.h"
+
+#include "topics/conversions.h"
+#include "topics/tf_prefix.h"
+
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
+#include <sensor_msgs/JointState.h>
+#include <sensor_msgs/LaserScan.h>
+#include <tf2_msgs/TFMessage.h>
+
+#include <cmath>
+#include <optional>
+
+namespace bullet_sim_node {
+namespace {
+
+// Outgoing messages kept per subscriber: at 100x real time a 200 Hz IMU sends 20000
+// messages per wall second, and a short stall of a subscriber must not lose any.
+constexpr uint32_t kQueueSize = 200;
+// What tf2_ros's TransformBroadcaster queues on /tf.
+constexpr uint32_t kTfQueueSize = 100;
+
+struct Field {
+  const char* name;
+  double value;
+};
+
+/// The first non-finite field of a command, if any.
+std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
+  const Field fields[] = {{"linear.x", command.linear.x},   {"linear.y", command.linear.y},
+                          {"linear.z", command.linear.z},   {"angular.x", command.angular.x},
+                          {"angular.y", command.angular.y}, {"angular.z", command.angular.z}};
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value)) return field;
+  return std::nullopt;
+}
+
+}  // namespace
+
+RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
+                 const ros::NodeHandle& robot_nh, const std::string& tf_prefix)
+    : sim_(sim), queue_(queue), robot_(robot), tf_prefix_(tf_prefix) {
+  ros::NodeHandle nh(robot_nh);
+  const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
+  for (const bullet_sim::RaySpec& ray : spec.rays)
+    scan_pubs_.push_back(
+        CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, ray.topic, kQueueSize));
+  for (const bullet_sim::ImuSpec& imu : spec.imus)
+    imu_pubs_.push_back(CountedPublisher::advertise<sensor_msgs::Imu>(nh, imu.topic, kQueueSize));
+  joint_state_pub_ =
+      CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
+  if (spec.diff_drive) {
+    odom_pub_ = CountedPublisher::advertise<nav_msgs::Odometry>(
+        nh, spec.diff_drive->odometry_topic, kQueueSize);
+    publish_odom_tf_ = spec.diff_drive->publish_odom_tf;
+    if (publish_odom_tf_) tf_pub_ = nh.advertise<tf2_msgs::TFMessage>("/tf", kTfQueueSize);
+    cmd_vel_sub_ = nh.subscribe(spec.diff_drive->command_topic, 1, &RobotIo::onCmdVel, this,
+                                ros::TransportHints().tcpNoDelay());
+  }
+}
+
+void RobotIo::publish(const bullet_sim::DueSensor& due) {
+  switch (due.kind) {
+    case bullet_sim::SensorKind::Ray:
+      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].hasSubscribers()) {
+        sensor_msgs::LaserScan scan = toMsg(sim_.readRay(robot_, due.index));
+        scan.header.frame_id = resolveFrame(tf_prefix_, scan.header.frame_id);
+        queue_.publish(scan_pubs_[due.index].publisher(), std::move(scan));
+      }
+      break;
+    case bullet_sim::SensorKind::Imu:
+      if (due.index < imu_pubs_.size() && imu_pubs_[due.index].hasSubscribers()) {
+        sensor_msgs::Imu imu = toMsg(sim_.readImu(robot_, due.index));
+        imu.header.frame_id = resolveFrame(tf_prefix_, imu.header.frame_id);
+        queue_.publish(imu_pubs_[due.index].publisher(), std::move(imu));
+      }
+      break;
+    case bullet_sim::SensorKind::Odometry:
+      publishOdometry();
+      break;
+    case bullet_sim::SensorKind::JointStates:
+      if (joint_state_pub_.hasSubscribers())
+        queue_.publish(joint_state_pub_.publisher(), toMsg(sim_.readJointStates(robot_)));
+      break;
+    case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
+      break;
+  }
+}
+
+void RobotIo::publishOdometry() {
+  const bool odom_wanted = odom_pub_.hasSubscribers();
+  if (!odom_wanted && !publish_odom_tf_) return;
+  bullet_sim::OdometryData odom = sim_.readOdometry(robot_);
+  odom.frame_id = resolveFrame(tf_prefix_, odom.frame_id);
+  odom.child_frame_id = resolveFrame(tf_prefix_, odom.child_frame_id);
+  if (publish_odom_tf_) {
+    tf2_msgs::TFMessage tf;
+    tf.transforms.push_back(toTransformMsg(odom));
+    queue_.publish(tf_pub_, std::move(tf));
+  }
+  if (odom_wanted) queue_.publish(odom_pub_.publisher(), toMsg(odom));
+}
+
+void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {
+  if (const std::optional<Field> bad = firstNonFiniteField(*command)) {
+    ROS_WARN_THROTTLE(5.0, "robot %s: dropped a %s command: %s is %f", robot_.c_str(),
+                      cmd_vel_sub_.getTopic().c_str(), bad->name, bad->value);
+    return;
+  }
+  sim_.setCmdVel(robot_, command->linear.x, command->angular.z);
+}
+
+}  // namespace bullet_sim_node

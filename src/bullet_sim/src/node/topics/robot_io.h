@@ -1,0 +1,51 @@
+// The ROS side of one simulated robot: its sensor publishers and its command subscriber.
+#pragma once
+
+#include <bullet_sim/simulation.h>
+
+#include "topics/counted_publisher.h"
+#include "topics/publish_queue.h"
+
+#include <geometry_msgs/Twist.h>
+#include <ros/node_handle.h>
+
+#include <string>
+#include <vector>
+
+namespace bullet_sim_node {
+
+/// Publishes a robot's sensors (scan, imu, odom + tf, joint_states) as they fall due and
+/// feeds its diff-drive commands to the simulation. Topic names come from the robot's
+/// Gazebo tags, resolved in `robot_nh` (the robot's namespace); frame ids (odom, base,
+/// scan, imu) are put under `tf_prefix` as Gazebo's plugins do. A sensor topic nobody
+/// subscribes to is not read from the simulation at all; the odom tf is always sent. Messages
+/// leave through `queue`, in the order they are made.
+class RobotIo {
+ public:
+  /// `sim` and `queue` must outlive this object.
+  RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
+          const ros::NodeHandle& robot_nh, const std::string& tf_prefix);
+  RobotIo(const RobotIo&) = delete;
+  RobotIo& operator=(const RobotIo&) = delete;
+
+  /// Publishes the reading of one due sensor of this robot, if it is wanted.
+  void publish(const bullet_sim::DueSensor& due);
+
+ private:
+  void onCmdVel(const geometry_msgs::Twist::ConstPtr& command);
+  void publishOdometry();
+
+  bullet_sim::Simulation& sim_;
+  PublishQueue& queue_;
+  const std::string robot_;
+  const std::string tf_prefix_;
+  std::vector<CountedPublisher> scan_pubs_;  ///< one per RaySpec, same index
+  std::vector<CountedPublisher> imu_pubs_;   ///< one per ImuSpec, same index
+  CountedPublisher odom_pub_;
+  CountedPublisher joint_state_pub_;
+  ros::Subscriber cmd_vel_sub_;
+  ros::Publisher tf_pub_;  ///< /tf, for the odom transform
+  bool publish_odom_tf_ = false;
+};
+
+}  // namespace bullet_sim_node
