@@ -2,6 +2,7 @@
 // with MTL colours; the cache; unreadable files. Every file is written by the test.
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -132,6 +133,49 @@ TEST_F(MeshFiles, ObjGivesOnePartPerMaterialWithItsDiffuseColour) {
   }
   EXPECT_EQ(red, 1);
   EXPECT_EQ(blue, 1);
+}
+
+/// A unit cube in OBJ: 8 corners, each face with its own 4 texture coordinates, so a
+/// corner has 3 different ones.
+/// The unit cube's faces by corner (1-based, corner i at (i-1 & 1, i-1 >> 1 & 1, i-1 >> 2 & 1)).
+constexpr int kCubeFaces[6][4] = {{1, 3, 4, 2}, {5, 6, 8, 7}, {1, 2, 6, 5},
+                                  {3, 7, 8, 4}, {1, 5, 7, 3}, {2, 4, 8, 6}};
+
+std::string cubeWithFaceCoordinates() {
+  std::string obj = "mtllib cube.mtl\nusemtl paint\n";
+  for (int i = 0; i < 8; ++i) {
+    obj += "v " + std::to_string(i & 1) + " " + std::to_string((i >> 1) & 1) + " " +
+           std::to_string((i >> 2) & 1) + "\n";
+  }
+  for (int f = 0; f < 6; ++f) {
+    obj += "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf";
+    for (int c = 0; c < 4; ++c) {
+      obj += " " + std::to_string(kCubeFaces[f][c]) + "/" + std::to_string(4 * f + c + 1);
+    }
+    obj += "\n";
+  }
+  return obj;
+}
+
+TEST_F(MeshFiles, CornersJoinUnlessATextureNeedsTheirCoordinates) {
+  bullet_sim_test::writeText(file("paint.png"), "an image's bytes");
+  for (const std::string texture : {"", "paint.png"}) {
+    SCOPED_TRACE("map_Kd '" + texture + "'");
+    bullet_sim_test::writeText(file("cube.obj"), cubeWithFaceCoordinates());
+    bullet_sim_test::writeText(file("cube.mtl"),
+              "newmtl paint\nKd 0.5 0.5 0.5\n" + (texture.empty() ? "" : "map_Kd " + texture + "\n"));
+    const TriangleMesh mesh = readMeshFile(file("cube.obj"));
+    EXPECT_EQ(mesh.triangleCount(), 12u);
+    // Untextured, the 24 face corners are the cube's 8 corners; textured, a corner stays
+    // apart for each different coordinate it has (the c-th corner of a face has the c-th).
+    std::set<std::pair<int, int>> corner_coordinates;
+    for (const auto& face : kCubeFaces) {
+      for (int c = 0; c < 4; ++c) corner_coordinates.insert({face[c], c});
+    }
+    EXPECT_EQ(mesh.vertexCount(), texture.empty() ? 8u : corner_coordinates.size());
+    ASSERT_EQ(mesh.parts.size(), 1u);
+    EXPECT_EQ(mesh.parts[0].uvs.size(), texture.empty() ? 0u : corner_coordinates.size());
+  }
 }
 
 TEST_F(MeshFiles, CacheReadsAFileOnceWhileItIsUsedAndAgainWhenItChanges) {

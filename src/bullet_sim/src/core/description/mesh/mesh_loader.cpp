@@ -139,6 +139,15 @@ std::string joined(const std::vector<std::string>& items) {
   return out.empty() ? "nowhere" : out;
 }
 
+/// True when a material of the scene has a diffuse texture: only then are the texture
+/// coordinates kept.
+bool hasDiffuseTexture(const aiScene& scene) {
+  for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
+    if (scene.mMaterials[i]->GetTextureCount(aiTextureType_DIFFUSE) > 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 size_t TriangleMesh::triangleCount() const {
@@ -161,18 +170,20 @@ TriangleMesh importMeshFile(const std::string& path) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                               aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  // Positions, materials and texture coordinates are used: without normals the corners
-  // that faces share become one vertex (smaller hulls, less to transform), unless their
-  // texture coordinates differ.
-  importer.SetPropertyInteger(
-      AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
-                                  aiComponent_COLORS |
-                                  aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
-                                  aiComponent_TEXTURES | aiComponent_LIGHTS |
-                                  aiComponent_CAMERAS);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_RemoveComponent | aiProcess_Triangulate |
-                                  aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (!scene || !scene->mRootNode) {
+    throw LoadError(path + ": cannot read mesh: " + importer.GetErrorString());
+  }
+  // Positions, materials and, for a textured file, texture coordinates are used: without
+  // the rest the corners that faces share become one vertex (smaller hulls, less to
+  // transform), unless their texture coordinates differ.
+  int dropped = aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
+                aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS | aiComponent_TEXTURES |
+                aiComponent_LIGHTS | aiComponent_CAMERAS;
+  if (!hasDiffuseTexture(*scene)) dropped |= aiComponent_TEXCOORDS;
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, dropped);
+  scene = importer.ApplyPostProcessing(aiProcess_RemoveComponent | aiProcess_Triangulate |
+                                       aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) {
     throw LoadError(path + ": cannot read mesh: " + importer.GetErrorString());
   }
