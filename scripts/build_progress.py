@@ -2,10 +2,14 @@
 """Reads catkin_make's output on stdin and says where the build is: a line when a package
 starts compiling and, at the end, each package's time from its first compile line to its
 last target built (packages build in parallel with -j2, so the times overlap). Warnings, errors
-and catkin's headlines pass through as they come."""
+and catkin's headlines pass through as they come. When nothing was printed for HEARTBEAT_S
+(one long compile), a line says which package is being built and how far it is."""
 import re
 import sys
+import threading
 import time
+
+HEARTBEAT_S = 25
 
 PASS_THROUGH = re.compile(r'(^#### |^-- ~~ +[a-z]|: (error|warning):|^make.*Error|\*\*\*)')
 PACKAGE_WORK = re.compile(r'(Building \w+ object|Linking \w+ \w+ library|Linking \w+ executable'
@@ -20,14 +24,27 @@ class Progress:
         self.start = clock()
         self.spans = {}  # package -> [first, last] seconds since start
         self.package_of = {}  # make target -> package, learnt from its object files
+        self.files = {}  # package -> object files compiled so far
+        self.current = None  # the package of the latest compile line
+        self.last_output = 0.0
+        self.lock = threading.Lock()
 
     def stamp(self, seconds):
         return '[%2d:%02d]' % (seconds // 60, seconds % 60)
 
+    def write(self, text, now):
+        self.out.write(text)
+        self.out.flush()
+        self.last_output = now
+
     def line(self, text):
+        with self.lock:
+            self.read(text)
+
+    def read(self, text):
         now = self.clock() - self.start
         if PASS_THROUGH.search(text):
-            self.out.write(text if text.endswith('\n') else text + '\n')
+            self.write(text if text.endswith('\n') else text + '\n', now)
         target = TARGET_OF.search(text)
         if target:
             self.package_of[target.group(2)] = target.group(1)
@@ -41,9 +58,23 @@ class Progress:
         package = match.group(2)
         if package not in self.spans:
             self.spans[package] = [now, now]
-            self.out.write('%s building %s\n' % (self.stamp(now), package))
+            self.write('%s building %s\n' % (self.stamp(now), package), now)
         self.spans[package][1] = now
-        self.out.flush()
+        self.current = package
+        if match.group(1).startswith('Building'):
+            self.files[package] = self.files.get(package, 0) + 1
+
+    def heartbeat(self):
+        """Says where the build is when nothing was printed for HEARTBEAT_S."""
+        with self.lock:
+            now = self.clock() - self.start
+            if now - self.last_output < HEARTBEAT_S:
+                return
+            if self.current is None:
+                self.write('%s configuring\n' % self.stamp(now), now)
+            else:
+                self.write('%s building %s: %d files compiled so far\n' % (
+                    self.stamp(now), self.current, self.files.get(self.current, 0)), now)
 
     def summary(self):
         total = self.clock() - self.start
@@ -54,10 +85,18 @@ class Progress:
         return '\n'.join(lines) + '\n'
 
 
+def beat(progress, done):
+    while not done.wait(1.0):
+        progress.heartbeat()
+
+
 def main():
     progress = Progress(sys.stdout)
+    done = threading.Event()
+    threading.Thread(target=beat, args=(progress, done), daemon=True).start()
     for text in sys.stdin:
         progress.line(text)
+    done.set()
     if progress.spans:
         sys.stdout.write(progress.summary())
 

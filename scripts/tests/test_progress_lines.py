@@ -42,6 +42,30 @@ def test_a_line_when_a_package_starts_and_its_span_at_the_end():
     assert summary[2].split()[:3] == ['bullet_sim', '135.0', 's']
 
 
+def test_a_long_compile_is_reported_every_heartbeat():
+    clock, out = Clock(), io.StringIO()
+    progress = build_progress.Progress(out, clock)
+    clock.now = 20
+    progress.heartbeat()  # 20 s of cmake: not yet
+    clock.now = 26
+    progress.heartbeat()
+    clock.now = 30
+    progress.line('[ 10%] Building CXX object src/bullet_sim/CMakeFiles/core.dir/src/a.cpp.o\n')
+    clock.now = 31
+    progress.line('[ 11%] Building CXX object src/bullet_sim/CMakeFiles/core.dir/src/b.cpp.o\n')
+    clock.now = 50
+    progress.heartbeat()  # 20 s after the package's first line: quiet
+    clock.now = 56
+    progress.heartbeat()
+    progress.heartbeat()  # just said: not again
+    clock.now = 81
+    progress.heartbeat()
+    assert out.getvalue().splitlines() == [
+        '[ 0:26] configuring', '[ 0:30] building bullet_sim',
+        '[ 0:56] building bullet_sim: 2 files compiled so far',
+        '[ 1:21] building bullet_sim: 2 files compiled so far']
+
+
 def write_result(folder, name, passed, failed, mtime):
     cases = ''.join('<testcase classname="c" name="p%d"/>' % i for i in range(passed))
     cases += ''.join('<testcase classname="c" name="f%d"><failure message="no"/></testcase>' % i
