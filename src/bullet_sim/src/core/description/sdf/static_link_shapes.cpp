@@ -43,43 +43,50 @@ std::string meshBaseDir(const sdf::Mesh& mesh, const std::string& source) {
 
 }  // namespace
 
+template <class Element>
+StaticShape StaticLinkShapes::elementShape(const std::string& model, const sdf::Link& link,
+                                           const Element& element,
+                                           const Eigen::Isometry3d& T_world_link, bool collides,
+                                           std::string* where) {
+  *where = source_ + ": model '" + model + "' link '" + link.Name() + "' " +
+           (collides ? "collision" : "visual") + " '" + element.Name() + "'";
+  checkGeometrySize(*element.Geom(), *where);
+  return shape(model, link, *element.Geom(), T_world_link * sdfToIsometry(poseInParent(element)),
+               collides);
+}
+
 void StaticLinkShapes::read(const std::string& model, const sdf::Link& link,
                             const Eigen::Isometry3d& T_world_link, WorldSpec* spec) {
-  readCollisions(model, link, T_world_link, spec);
-  readVisuals(model, link, T_world_link, spec);
-}
-
-void StaticLinkShapes::readCollisions(const std::string& model, const sdf::Link& link,
-                                      const Eigen::Isometry3d& T_world_link, WorldSpec* spec) {
   for (uint64_t c = 0; c < link.CollisionCount(); ++c) {
-    const sdf::Collision& col = *link.CollisionByIndex(c);
-    const std::string where = source_ + ": model '" + model + "' link '" + link.Name() +
-                              "' collision '" + col.Name() + "'";
-    checkGeometrySize(*col.Geom(), where);
-    StaticShape s =
-        shape(model, link, *col.Geom(), T_world_link * sdfToIsometry(poseInParent(col)), true);
-    if (s.kind == Geometry::Mesh && !s.mesh) continue;  // not found: warned, left out
-    SurfaceParams surface;
-    readOdeFriction(col, where, &surface);
-    s.friction = surface.isotropicMu();
-    spec->shapes.push_back(std::move(s));
+    addCollision(model, link, *link.CollisionByIndex(c), T_world_link, spec);
+  }
+  for (uint64_t v = 0; v < link.VisualCount(); ++v) {
+    addVisual(model, link, *link.VisualByIndex(v), T_world_link, spec);
   }
 }
 
-void StaticLinkShapes::readVisuals(const std::string& model, const sdf::Link& link,
-                                   const Eigen::Isometry3d& T_world_link, WorldSpec* spec) {
-  for (uint64_t v = 0; v < link.VisualCount(); ++v) {
-    const sdf::Visual& vis = *link.VisualByIndex(v);
-    const std::string where = source_ + ": model '" + model + "' link '" + link.Name() +
-                              "' visual '" + vis.Name() + "'";
-    checkGeometrySize(*vis.Geom(), where);
-    StaticShape s =
-        shape(model, link, *vis.Geom(), T_world_link * sdfToIsometry(poseInParent(vis)), false);
-    const Appearance look = visualAppearance(vis, where, source_, resolver_, &spec->warnings);
-    s.rgba = look.rgba;
-    s.texture = look.texture;
-    mergeVisual(s, spec);
-  }
+void StaticLinkShapes::addCollision(const std::string& model, const sdf::Link& link,
+                                    const sdf::Collision& col,
+                                    const Eigen::Isometry3d& T_world_link, WorldSpec* spec) {
+  std::string where;
+  StaticShape s = elementShape(model, link, col, T_world_link, true, &where);
+  if (s.kind == Geometry::Mesh && !s.mesh) return;  // not found: warned, left out
+  SurfaceParams surface;
+  readOdeFriction(col, where, &surface);
+  s.friction = surface.isotropicMu();
+  spec->shapes.push_back(std::move(s));
+}
+
+/// A visual colours the collision shape it equals, or is a visual-only shape.
+void StaticLinkShapes::addVisual(const std::string& model, const sdf::Link& link,
+                                 const sdf::Visual& vis, const Eigen::Isometry3d& T_world_link,
+                                 WorldSpec* spec) {
+  std::string where;
+  StaticShape s = elementShape(model, link, vis, T_world_link, false, &where);
+  const Appearance look = visualAppearance(vis, where, source_, resolver_, &spec->warnings);
+  s.rgba = look.rgba;
+  s.texture = look.texture;
+  mergeVisual(s, spec);
 }
 
 StaticShape StaticLinkShapes::shape(const std::string& model, const sdf::Link& link,

@@ -31,10 +31,16 @@ class StaticLinkShapes {
   const std::vector<std::string>& meshWarnings() const { return mesh_warnings_; }
 
  private:
-  void readCollisions(const std::string& model, const sdf::Link& link,
-                      const Eigen::Isometry3d& T_world_link, WorldSpec* spec);
-  void readVisuals(const std::string& model, const sdf::Link& link,
-                   const Eigen::Isometry3d& T_world_link, WorldSpec* spec);
+  void addCollision(const std::string& model, const sdf::Link& link, const sdf::Collision& col,
+                    const Eigen::Isometry3d& T_world_link, WorldSpec* spec);
+  void addVisual(const std::string& model, const sdf::Link& link, const sdf::Visual& vis,
+                 const Eigen::Isometry3d& T_world_link, WorldSpec* spec);
+  /// The shape of a collision or visual `element` of `link`, its size checked; `where` is
+  /// set to the element's name for messages.
+  template <class Element>
+  StaticShape elementShape(const std::string& model, const sdf::Link& link,
+                           const Element& element, const Eigen::Isometry3d& T_world_link,
+                           bool collides, std::string* where);
   StaticShape shape(const std::string& model, const sdf::Link& link, const sdf::Geometry& geom,
                     const Eigen::Isometry3d& pose, bool collides);
   /// A mesh's triangles: its file resolved from the folder of the SDF file that names it.
