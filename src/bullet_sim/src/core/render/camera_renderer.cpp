@@ -6,8 +6,6 @@
 #include <set>
 #include <stdexcept>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 #include <sim_render/renderer.h>
 
 #include "bullet_sim/errors.h"
@@ -15,6 +13,7 @@
 #include "description/gazebo/camera_lens.h"
 #include "description/robot_plan.h"
 #include "render/lens_camera.h"
+#include "render/shape_sources.h"
 
 namespace bullet_sim {
 namespace {
@@ -59,113 +58,64 @@ const Pose3* findLink(const std::vector<LinkPose>& poses, const std::string& lin
   return nullptr;
 }
 
-/// The renderer's triangles of each part of a mesh file, made once per file.
-class MeshTriangles {
- public:
-  const std::vector<std::shared_ptr<const sim_render::Mesh>>& of(
-      const std::shared_ptr<const TriangleMesh>& mesh) {
-    auto [it, inserted] = parts_.try_emplace(mesh);
-    if (inserted) {
-      for (const MeshPart& part : mesh->parts) {
-        auto triangles = std::make_shared<sim_render::Mesh>();
-        triangles->vertices = part.vertices;
-        triangles->triangles = part.triangles;
-        triangles->uvs = part.uvs;
-        it->second.push_back(std::move(triangles));
-      }
-    }
-    return it->second;
-  }
-
- private:
-  std::map<std::shared_ptr<const TriangleMesh>,
-           std::vector<std::shared_ptr<const sim_render::Mesh>>> parts_;
-};
-
-/// Texture images, each file decoded once (OpenCV) and shared by every shape showing it.
-class TextureImages {
- public:
-  explicit TextureImages(std::vector<std::string>* warnings) : warnings_(warnings) {}
-
-  /// The image in `path`, or null (with one warning naming the file) when it cannot be read.
-  std::shared_ptr<const sim_render::Texture> load(const std::string& path) {
-    if (path.empty()) return nullptr;
-    auto [it, inserted] = images_.try_emplace(path);
-    if (!inserted) return it->second;
-    const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
-    if (bgr.empty()) {
-      warnings_->push_back("texture " + path + ": cannot read the image: drawn in its colour");
-      return nullptr;
-    }
-    cv::Mat rgb;
-    cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-    std::vector<uint8_t> bytes(rgb.total() * 3);
-    for (int row = 0; row < rgb.rows; ++row) {
-      std::copy(rgb.ptr<uint8_t>(row), rgb.ptr<uint8_t>(row) + rgb.cols * 3,
-                bytes.begin() + static_cast<size_t>(row) * rgb.cols * 3);
-    }
-    it->second = std::make_shared<const sim_render::Texture>(rgb.cols, rgb.rows, std::move(bytes));
-    return it->second;
-  }
-
-  void warn(const std::string& message) { warnings_->push_back(message); }
-
- private:
-  std::vector<std::string>* warnings_;
-  std::map<std::string, std::shared_ptr<const sim_render::Texture>> images_;
-};
-
-/// What the renderer needs to draw shapes: mesh triangles and texture images, made once.
-struct ShapeSources {
-  MeshTriangles triangles;
-  TextureImages textures;
-  std::set<std::string> missing_reported;  ///< mesh files whose missing texture was named
-};
-
-/// The renderer's shapes of a geometry in colour `rgba` (with the material's `texture`, if
-/// any): one for a primitive; for a mesh, whose triangles `mesh` holds, one per part, a
-/// part without a colour of its own taking `rgba`, a part with a texture of its own showing
-/// it unshaded by any colour. A mesh that could not be read (null) has none: the loader
-/// already warned.
-std::vector<sim_render::ShapeSpec> shapesOf(const Geometry& geometry,
-                                            const std::shared_ptr<const TriangleMesh>& mesh,
-                                            const Eigen::Vector4f& rgba, const TextureRef& texture,
-                                            ShapeSources* sources) {
-  if (geometry.kind != Geometry::Mesh) {
-    sim_render::ShapeSpec shape(geometry, rgba);
-    shape.texture = sources->textures.load(texture.path);
-    shape.uv_transform.scale = texture.uv_scale;
-    shape.uv_transform.offset = texture.uv_offset;
-    return {shape};
-  }
-  std::vector<sim_render::ShapeSpec> shapes;
-  if (!mesh) return shapes;
-  const auto& parts = sources->triangles.of(mesh);
-  for (size_t i = 0; i < parts.size(); ++i) {
-    const MeshPart& file_part = mesh->parts[i];
-    sim_render::ShapeSpec part(geometry, file_part.rgba.value_or(rgba));
-    part.triangles = parts[i];
-    if (!file_part.missing_texture.empty() &&
-        sources->missing_reported.insert(mesh->path + file_part.missing_texture).second) {
-      sources->textures.warn(mesh->path + ": texture '" + file_part.missing_texture +
-                             "' not found beside the mesh or in ../materials/textures: "
-                             "drawn in its colour");
-    }
-    if (!file_part.texture_path.empty()) {
-      part.texture = sources->textures.load(file_part.texture_path);
-      if (part.texture) part.rgba = Eigen::Vector4f::Ones();
-    }
-    shapes.push_back(std::move(part));
-  }
-  return shapes;
-}
-
 void toMono(const std::vector<uint8_t>& rgb, std::vector<uint8_t>* mono) {
   mono->resize(rgb.size() / 3);
   for (size_t i = 0; i < mono->size(); ++i) {
     const double y = 0.299 * rgb[3 * i] + 0.587 * rgb[3 * i + 1] + 0.114 * rgb[3 * i + 2];
     (*mono)[i] = static_cast<uint8_t>(std::lround(std::min(255.0, y)));
   }
+}
+
+/// Camera `index` of `robot` (spec `spec`), checked to exist and, when a depth image is
+/// asked for, to be a depth camera.
+const CameraSpec& cameraToRender(const RobotSpec& spec, const std::string& robot, size_t index,
+                                 bool with_depth) {
+  if (index >= spec.cameras.size()) {
+    throw std::out_of_range("robot '" + robot + "' has no camera " + std::to_string(index) +
+                            " (it has " + std::to_string(spec.cameras.size()) + ")");
+  }
+  const CameraSpec& camera = spec.cameras[index];
+  if (with_depth && !camera.depth) {
+    throw std::invalid_argument(cameraName(camera) + " of robot '" + robot +
+                                "' is not a depth camera");
+  }
+  return camera;
+}
+
+/// Everything of `image` but its pixels and step.
+void setImageHeader(const CameraSpec& camera, double time_s, ImageData* image) {
+  image->time_s = time_s;
+  image->frame_id = camera.frame_id;
+  image->width = camera.width;
+  image->height = camera.height;
+  image->encoding = imageEncoding(camera);
+}
+
+/// The depth buffer of the pass `renderer` just drew, its cutoffs applied.
+void readDepth(const sim_render::Renderer& renderer, const CameraSpec& camera, double time_s,
+               DepthImageData* depth) {
+  depth->time_s = time_s;
+  depth->frame_id = camera.frame_id;
+  depth->width = camera.width;
+  depth->height = camera.height;
+  renderer.depthImage(&depth->depth_m, static_cast<float>(camera.depth->cutoff_m),
+                      static_cast<float>(camera.depth->cutoff_max_m));
+}
+
+/// The pixels of `image` in its encoding (mono8 or bgr8) from an rgb8 frame, and its step.
+void encodeFromRgb(const std::vector<uint8_t>& rgb, int width, ImageData* image) {
+  if (image->encoding == "mono8") {
+    toMono(rgb, &image->data);
+    image->step = width;
+    return;
+  }
+  image->data.resize(rgb.size());
+  for (size_t i = 0; i + 2 < rgb.size(); i += 3) {
+    image->data[i] = rgb[i + 2];
+    image->data[i + 1] = rgb[i + 1];
+    image->data[i + 2] = rgb[i];
+  }
+  image->step = 3 * width;
 }
 
 }  // namespace
@@ -297,6 +247,37 @@ struct CameraRenderer::Impl {
     }
   }
 
+  /// Makes camera `index`'s renderer (or lens camera) the first time it is drawn.
+  static void prepareCamera(const CameraSpec& camera, size_t index, RobotScene* robot) {
+    std::unique_ptr<sim_render::Renderer>& renderer = robot->renderers[index];
+    std::unique_ptr<LensCamera>& lens_camera = robot->lens_cameras[index];
+    if (renderer || lens_camera) return;
+    validateCamera(camera);
+    if (camera.lens) {
+      lens_camera = std::make_unique<LensCamera>(camera);
+    } else {
+      renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
+    }
+  }
+
+  /// World pose of `camera` on robot `robot`, whose links poseRobots() has just read.
+  Eigen::Isometry3d cameraPose(const std::string& robot, const CameraSpec& camera,
+                               size_t* link_hint) const {
+    const Pose3* link = findLink(camera_robot_poses, camera.link, link_hint);
+    if (!link) throw LoadError(cameraName(camera) + " of robot '" + robot + "': no such link");
+    return toIsometry(*link) * toIsometry(camera.pose_in_link);
+  }
+
+  /// Renders camera `index` of `robot` from T_world_camera into `rgb`.
+  void draw(RobotScene& robot, size_t index, const Eigen::Isometry3d& T_world_camera,
+            std::vector<uint8_t>* rgb) {
+    if (robot.lens_cameras[index]) {
+      robot.lens_cameras[index]->render(scene, T_world_camera, *rgb);
+    } else {
+      robot.renderers[index]->render(scene, T_world_camera, *rgb);
+    }
+  }
+
   const Simulation& sim;
   sim_render::Scene scene;
   std::map<std::string, RobotScene> robots;
@@ -314,70 +295,24 @@ const std::vector<std::string>& CameraRenderer::warnings() const { return impl_-
 
 void CameraRenderer::render(const std::string& robot, size_t index, ImageData* image,
                             DepthImageData* depth) {
-  const RobotSpec& spec = impl_->sim.robotSpec(robot);
-  if (index >= spec.cameras.size()) {
-    throw std::out_of_range("robot '" + robot + "' has no camera " + std::to_string(index) +
-                            " (it has " + std::to_string(spec.cameras.size()) + ")");
-  }
-  const CameraSpec& camera = spec.cameras[index];
-  if (depth && !camera.depth) {
-    throw std::invalid_argument(cameraName(camera) + " of robot '" + robot +
-                                "' is not a depth camera");
-  }
+  const CameraSpec& camera = cameraToRender(impl_->sim.robotSpec(robot), robot, index,
+                                             depth != nullptr);
   impl_->syncRobots();
   Impl::RobotScene& scene_robot = impl_->robots.at(robot);
-  std::unique_ptr<sim_render::Renderer>& renderer = scene_robot.renderers[index];
-  std::unique_ptr<LensCamera>& lens_camera = scene_robot.lens_cameras[index];
-  if (!renderer && !lens_camera) {
-    validateCamera(camera);
-    if (camera.lens) {
-      lens_camera = std::make_unique<LensCamera>(camera);
-    } else {
-      renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
-    }
-  }
+  impl_->prepareCamera(camera, index, &scene_robot);
   impl_->poseRobots(robot);
-  const Pose3* link =
-      findLink(impl_->camera_robot_poses, camera.link, &scene_robot.camera_link_hints[index]);
-  if (!link) throw LoadError(cameraName(camera) + " of robot '" + robot + "': no such link");
-  const Eigen::Isometry3d T_world_camera = toIsometry(*link) * toIsometry(camera.pose_in_link);
-
-  image->time_s = impl_->sim.timeS();
-  image->frame_id = camera.frame_id;
-  image->width = camera.width;
-  image->height = camera.height;
-  image->encoding = imageEncoding(camera);
+  const Eigen::Isometry3d T_world_camera =
+      impl_->cameraPose(robot, camera, &scene_robot.camera_link_hints[index]);
+  setImageHeader(camera, impl_->sim.timeS(), image);
   const bool rgb8 = image->encoding == "rgb8";
   std::vector<uint8_t>& rgb = rgb8 ? image->data : impl_->rgb;
-  if (lens_camera) {
-    lens_camera->render(impl_->scene, T_world_camera, rgb);
-  } else {
-    renderer->render(impl_->scene, T_world_camera, rgb);
-  }
-  if (depth) {
-    depth->time_s = image->time_s;
-    depth->frame_id = camera.frame_id;
-    depth->width = camera.width;
-    depth->height = camera.height;
-    renderer->depthImage(&depth->depth_m, static_cast<float>(camera.depth->cutoff_m),
-                         static_cast<float>(camera.depth->cutoff_max_m));
-  }
+  impl_->draw(scene_robot, index, T_world_camera, &rgb);
+  if (depth) readDepth(*scene_robot.renderers[index], camera, image->time_s, depth);
   if (rgb8) {
     image->step = 3 * camera.width;
-    return;
+  } else {
+    encodeFromRgb(impl_->rgb, camera.width, image);
   }
-  if (image->encoding == "mono8") {
-    toMono(impl_->rgb, &image->data);
-    image->step = camera.width;
-    return;
-  }
-  image->data.resize(impl_->rgb.size());
-  for (size_t i = 0; i + 2 < impl_->rgb.size(); i += 3) {
-    image->data[i] = impl_->rgb[i + 2];
-    image->data[i + 1] = impl_->rgb[i + 1];
-    image->data[i + 2] = impl_->rgb[i];
-  }
-  image->step = 3 * camera.width;
 }
 
 }  // namespace bullet_sim

@@ -43,23 +43,9 @@ void requireNonZero(double v, const char* element) {
 
 CameraLens::CameraLens(const LensSpec& spec, double horizontal_fov_rad) {
   if (spec.type == "custom") {
-    requireNonZero(spec.c1, "c1");
-    requireNonZero(spec.c2, "c2");
-    requireNonZero(spec.f, "f");
-    if (!std::isfinite(spec.c3)) {
-      throw std::invalid_argument("<custom_function> <c3>: '" + number(spec.c3) +
-                                  "' is not finite");
-    }
-    c1_ = spec.c1, c2_ = spec.c2, c3_ = spec.c3, f_ = spec.f;
-    fun_ = funOf(spec.fun);
+    useCustomFunction(spec);
   } else {
-    const auto it = presets().find(spec.type);
-    if (it == presets().end()) {
-      throw std::invalid_argument("<type>: '" + spec.type +
-                                  "' is not gnomonical, stereographic, equidistant, "
-                                  "equisolid_angle, orthographic or custom");
-    }
-    c1_ = it->second.c1, c2_ = it->second.c2, fun_ = it->second.fun;
+    usePreset(spec.type);
   }
   if (!(spec.cutoff_angle_rad > 0 && spec.cutoff_angle_rad <= M_PI)) {
     throw std::invalid_argument("<cutoff_angle>: '" + number(spec.cutoff_angle_rad) +
@@ -70,19 +56,42 @@ CameraLens::CameraLens(const LensSpec& spec, double horizontal_fov_rad) {
     throw std::invalid_argument("<horizontal_fov>: '" + number(horizontal_fov_rad) +
                                 "' must be in (0, 2 pi] radians for a wide-angle camera");
   }
-  if (spec.scale_to_hfov) {
-    const double x_edge = 0.5 * horizontal_fov_rad / c2_ + c3_;
-    const double edge = c1_ * apply(x_edge);
-    // sin and tan map angles one to one only up to pi / 2 (tan's pole, sin's peak).
-    const bool one_to_one = fun_ == Fun::Id || (fun_ == Fun::Sin && std::abs(x_edge) <= M_PI_2) ||
-                            (fun_ == Fun::Tan && std::abs(x_edge) < M_PI_2);
-    if (!(one_to_one && std::isfinite(edge) && edge > 0)) {
-      throw std::invalid_argument("<horizontal_fov>: '" + number(horizontal_fov_rad) +
-                                  "' is beyond what lens '" + spec.type +
-                                  "' maps (scale_to_hfov)");
-    }
-    f_ = 1.0 / edge;
+  if (spec.scale_to_hfov) f_ = 1.0 / edgeRadius(horizontal_fov_rad, spec.type);
+}
+
+void CameraLens::useCustomFunction(const LensSpec& spec) {
+  requireNonZero(spec.c1, "c1");
+  requireNonZero(spec.c2, "c2");
+  requireNonZero(spec.f, "f");
+  if (!std::isfinite(spec.c3)) {
+    throw std::invalid_argument("<custom_function> <c3>: '" + number(spec.c3) +
+                                "' is not finite");
   }
+  c1_ = spec.c1, c2_ = spec.c2, c3_ = spec.c3, f_ = spec.f;
+  fun_ = funOf(spec.fun);
+}
+
+void CameraLens::usePreset(const std::string& type) {
+  const auto it = presets().find(type);
+  if (it == presets().end()) {
+    throw std::invalid_argument("<type>: '" + type +
+                                "' is not gnomonical, stereographic, equidistant, "
+                                "equisolid_angle, orthographic or custom");
+  }
+  c1_ = it->second.c1, c2_ = it->second.c2, fun_ = it->second.fun;
+}
+
+double CameraLens::edgeRadius(double horizontal_fov_rad, const std::string& type) const {
+  const double x_edge = 0.5 * horizontal_fov_rad / c2_ + c3_;
+  const double edge = c1_ * apply(x_edge);
+  // sin and tan map angles one to one only up to pi / 2 (tan's pole, sin's peak).
+  const bool one_to_one = fun_ == Fun::Id || (fun_ == Fun::Sin && std::abs(x_edge) <= M_PI_2) ||
+                          (fun_ == Fun::Tan && std::abs(x_edge) < M_PI_2);
+  if (!(one_to_one && std::isfinite(edge) && edge > 0)) {
+    throw std::invalid_argument("<horizontal_fov>: '" + number(horizontal_fov_rad) +
+                                "' is beyond what lens '" + type + "' maps (scale_to_hfov)");
+  }
+  return edge;
 }
 
 double CameraLens::apply(double x) const {

@@ -35,6 +35,13 @@ class CameraLens {
   double paraxialFocalPx(int width) const;
 
  private:
+  /// The custom function's c1, c2, c3, f and fun, checked.
+  void useCustomFunction(const LensSpec& spec);
+  /// The c1, c2 and fun of a named lens type.
+  void usePreset(const std::string& type);
+  /// c1 * fun(hfov / 2 / c2 + c3), the unscaled radius of the image's side edges.
+  /// @throws std::invalid_argument when the mapping does not reach that far one to one.
+  double edgeRadius(double horizontal_fov_rad, const std::string& type) const;
   double apply(double x) const;
   double slope(double x) const;  ///< derivative of fun at x
 

@@ -43,6 +43,46 @@ TextureRef textureOf(const ScriptMaterial& found) {
   return texture;
 }
 
+/// The folder a material's relative script <uri>s start from: that of the file that
+/// defines it (`source` when libsdformat does not say), "" when that is no file.
+std::string scriptBaseDir(const sdf::ElementPtr& element, const std::string& source) {
+  const std::string defined_in = element && !element->FilePath().empty() ? element->FilePath()
+                                                                         : source;
+  std::error_code ec;
+  return fs::is_regular_file(defined_in, ec) ? fs::path(defined_in).parent_path().string() : "";
+}
+
+/// A script material's colour: its pass's diffuse, else its ambient, else white.
+Eigen::Vector4f scriptColour(const OgreMaterial& m) {
+  return m.diffuse ? *m.diffuse : m.ambient ? *m.ambient : Eigen::Vector4f::Ones();
+}
+
+/// The script material of `material`'s script name, looked up in its <uri>s and
+/// GAZEBO_RESOURCE_PATH; nullopt, with a warning unless it is a stock material, when no
+/// script defines it.
+std::optional<ScriptMaterial> lookUpScript(const sdf::Material& material,
+                                           const std::string& where, const std::string& source,
+                                           const UriResolver& resolver,
+                                           std::vector<std::string>* warnings) {
+  const std::string name = material.ScriptName();
+  const std::vector<std::string> resource_paths = gazeboResourcePaths();
+  const std::string base_dir = scriptBaseDir(material.Element(), source);
+  std::vector<std::string> uri_paths;
+  for (const std::string& uri : scriptUris(material)) {
+    const std::string path = resolveScriptUri(uri, base_dir, resolver, resource_paths);
+    if (!path.empty()) uri_paths.push_back(path);
+  }
+  std::vector<std::string> lookup_warnings;
+  auto found = findScriptMaterial(name, uri_paths, resource_paths, &lookup_warnings);
+  for (const std::string& w : lookup_warnings) warnings->push_back(where + ": " + w);
+  if (!found && !gazeboMaterialColour(name)) {
+    warnings->push_back(where + ": material script '" + name +
+                        "' is not one of Gazebo's stock materials nor in any script of its "
+                        "<uri>s or GAZEBO_RESOURCE_PATH: drawn grey");
+  }
+  return found;
+}
+
 }  // namespace
 
 std::string resolveScriptUri(const std::string& uri, const std::string& base_dir,
@@ -78,37 +118,12 @@ Appearance visualAppearance(const sdf::Visual& visual, const std::string& where,
   out.rgba = visualColour(visual, where, nullptr);
   const sdf::Material* material = visual.Material();
   if (!material || material->ScriptName().empty()) return out;
-  const sdf::ElementPtr element = material->Element();
   const std::string name = material->ScriptName();
-  const bool explicit_diffuse = element && element->HasElement("diffuse");
+  const bool explicit_diffuse = material->Element() && material->Element()->HasElement("diffuse");
   if (gazeboMaterialColour(name) && !explicit_diffuse) return out;  // a stock material
-
-  const std::vector<std::string> resource_paths = gazeboResourcePaths();
-  const std::string defined_in = element && !element->FilePath().empty() ? element->FilePath()
-                                                                         : source;
-  std::error_code ec;
-  const std::string base_dir =
-      fs::is_regular_file(defined_in, ec) ? fs::path(defined_in).parent_path().string() : "";
-  std::vector<std::string> uri_paths;
-  for (const std::string& uri : scriptUris(*material)) {
-    const std::string path = resolveScriptUri(uri, base_dir, resolver, resource_paths);
-    if (!path.empty()) uri_paths.push_back(path);
-  }
-  std::vector<std::string> lookup_warnings;
-  const auto found = findScriptMaterial(name, uri_paths, resource_paths, &lookup_warnings);
-  for (const std::string& w : lookup_warnings) warnings->push_back(where + ": " + w);
-  if (!found) {
-    if (!gazeboMaterialColour(name)) {
-      warnings->push_back(where + ": material script '" + name +
-                          "' is not one of Gazebo's stock materials nor in any script of its "
-                          "<uri>s or GAZEBO_RESOURCE_PATH: drawn grey");
-    }
-    return out;
-  }
-  if (!explicit_diffuse) {
-    const OgreMaterial& m = found->material;
-    out.rgba = m.diffuse ? *m.diffuse : m.ambient ? *m.ambient : Eigen::Vector4f::Ones();
-  }
+  const auto found = lookUpScript(*material, where, source, resolver, warnings);
+  if (!found) return out;
+  if (!explicit_diffuse) out.rgba = scriptColour(found->material);
   if (found->material.texture_unit && !found->texture_path.empty()) out.texture = textureOf(*found);
   return out;
 }

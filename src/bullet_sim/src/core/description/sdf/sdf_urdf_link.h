@@ -1,0 +1,52 @@
+#ifndef BULLET_SIM_CORE_SDF_URDF_LINK_H
+#define BULLET_SIM_CORE_SDF_URDF_LINK_H
+
+#include <map>
+#include <string>
+
+#include <urdf_model/model.h>
+
+#include "bullet_sim/description/resource_paths.h"
+#include "bullet_sim/description/robot_spec.h"
+#include "description/sdf/sdf_model_entries.h"
+
+namespace bullet_sim {
+
+/// Turns the links of one SDF model into URDF links, collecting what URDF has no place for
+/// in the model's RobotSpec and beside it.
+class SdfLinkConverter {
+ public:
+  /// `where` names the model in messages, `source` its file; warnings and surfaces go to
+  /// `spec`, which must outlive the converter.
+  SdfLinkConverter(std::string where, std::string source, const UriResolver& resolver,
+                   RobotSpec* spec)
+      : where_(std::move(where)), source_(std::move(source)), resolver_(resolver), spec_(spec) {}
+
+  /// The URDF link of `entry`: inertial (checked), collisions (their friction into
+  /// spec->surfaces), visuals in their material's colour; its sensors are warned about.
+  /// @throws LoadError for a bad inertia or geometry a movable body cannot have.
+  urdf::LinkSharedPtr convert(const LinkEntry& entry);
+
+  /// Material script textures of the visuals converted, until the specs of the visuals exist.
+  const std::map<const urdf::Visual*, TextureRef>& textures() const { return textures_; }
+
+ private:
+  void addCollisions(const sdf::Link& l, const std::string& link, const std::string& where,
+                     urdf::Link* out);
+  void addVisuals(const sdf::Link& l, const std::string& where, urdf::Link* out);
+  /// A mesh's file is resolved here, from the folder of the SDF file that names it: the
+  /// URDF model carries the path.
+  urdf::GeometrySharedPtr geometry(const sdf::Geometry& g, const std::string& where) const;
+  /// <surface><friction><ode><mu>/<mu2> of a collision, as the URDF <gazebo> tags give them.
+  void readFriction(const sdf::Collision& c, const std::string& link, const std::string& where);
+
+  std::string where_;
+  std::string source_;
+  const UriResolver& resolver_;
+  RobotSpec* spec_;
+  std::map<const urdf::Visual*, TextureRef> textures_;
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_SDF_URDF_LINK_H
