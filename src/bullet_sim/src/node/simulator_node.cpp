@@ -29,8 +29,11 @@ void spawnStartRobot(const Config& config, SimRunner* runner) {
 
 SimulatorNode::SimulatorNode(const Config& config, const ros::NodeHandle& nh,
                              const ros::NodeHandle& gazebo_nh)
+    : SimulatorNode(config, bullet_sim::loadWorldFile(config.world_file), nh, gazebo_nh) {}
+
+SimulatorNode::SimulatorNode(const Config& config, const bullet_sim::WorldSpec& world,
+                             const ros::NodeHandle& nh, const ros::NodeHandle& gazebo_nh)
     : pacer_(config.real_time_factor) {
-  const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(config.world_file);
   logWarnings(config.world_file, world.warnings);
   bullet_sim::SimConfig sim_config;
   sim_config.physics_step_s =
