@@ -12,6 +12,9 @@ import unittest
 import rospy
 import rostest
 from gazebo_msgs.srv import GetJointProperties, GetModelState, GetWorldProperties
+from geometry_msgs.msg import Point, Pose, Quaternion
+
+from gazebo_ros import gazebo_interface
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'overlay'))
 import overlay_workspace  # noqa: E402
@@ -120,6 +123,18 @@ class TestEmptyWorld(unittest.TestCase):
         self.assertEqual(out.returncode, 0, out.stdout)
         self.assertEqual(waiting.wait(timeout=30), 0, waiting.stdout.read())
         self.assertIn('follower', self.world().model_names)
+
+    def test_9b_the_python_api_spawns_and_sets_joints(self):
+        with open(self.urdf) as urdf:
+            xml = urdf.read()
+        pose = Pose(Point(0, -3, 0), Quaternion(0, 0, 0, 1))
+        self.assertTrue(gazebo_interface.spawn_urdf_model_client(
+            'py_probe', xml, '/', pose, '', '/gazebo'))
+        self.assertIn('py_probe', self.world().model_names)
+        self.assertTrue(gazebo_interface.set_model_configuration_client(
+            'py_probe', '', ['left_wheel_joint'], [0.4], '/gazebo'))
+        self.assertFalse(gazebo_interface.spawn_urdf_model_client(
+            'py_probe', xml, '/', pose, '', '/gazebo'))  # the name is taken
 
 
 if __name__ == '__main__':
