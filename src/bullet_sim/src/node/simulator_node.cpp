@@ -56,6 +56,9 @@ SimulatorNode::SimulatorNode(const Config& config, const bullet_sim::WorldSpec& 
   ROS_INFO("world %s (%s), %s, physics step %g s, real-time factor %g%s", world.name.c_str(),
            config.world_file.c_str(), robot.c_str(), sim_config.physics_step_s,
            config.real_time_factor, config.start_paused ? ", paused" : "");
+  // Sim time runs from the first step on, as a Gazebo world's time runs from when the
+  // world starts: the wall time spent building the simulation is not caught up.
+  pacer_.restart(sim_->timeS());
   runner_->publishClock();
 }
 
