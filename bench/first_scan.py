@@ -6,8 +6,10 @@ this process has its first laser scan, either with the master started by roslaun
 the clock starts. Then, after 5 s of simulation at real time, reads bullet_sim_node's
 resident memory. Prints both, the launch time last, after a timeline of when each stage
 was first seen (polling the master every 5 ms): the master up, the robot description set
-(xacro done), the simulator's spawn service up (node started, world loaded), spawn_model
-registered, the robot's /scan advertised (robot spawned), the first scan received.
+(xacro done), the simulator's process started (roslaunch started gzserver, which becomes
+bullet_sim_node; from /proc, to 10 ms), the simulator registered with the master (its roscpp
+started), the simulator's spawn service up (world loaded), spawn_model registered, the
+robot's /scan advertised (robot spawned), the first scan received.
 
 Usage: first_scan.py own-master|running-master   (BENCH_ROS_PORT, default 11462)
 """
@@ -22,6 +24,7 @@ import ros_bench
 MILESTONES = (
     ("master up", lambda m: m.is_online()),
     ("robot_description set (xacro ran)", lambda m: m.hasParam("/robot_description")),
+    ("simulator registered (its roscpp started)", lambda m: "/gazebo" in nodes_of(m)),
     ("/gazebo/spawn_urdf_model up (node started, world loaded)",
      lambda m: bool(m.lookupService("/gazebo/spawn_urdf_model"))),
     ("spawn_model registered", lambda m: "/spawn_urdf" in nodes_of(m)),
@@ -33,6 +36,17 @@ MILESTONES = (
 def nodes_of(master):
     publishers, subscribers, services = master.getSystemState()
     return {node for _, nodes in publishers + subscribers + services for node in nodes}
+
+
+PROCESS_STARTED = "simulator process started (gzserver, then bullet_sim_node)"
+
+
+def started_after(pid, boot_start_s):
+    """When process `pid` started, in seconds after `boot_start_s` (CLOCK_BOOTTIME), to the
+    10 ms of /proc's clock ticks."""
+    with open("/proc/%d/stat" % pid) as stat:
+        ticks = int(stat.read().rsplit(")", 1)[1].split()[19])
+    return ticks / os.sysconf("SC_CLK_TCK") - boot_start_s
 
 
 def watch(master, start, seen, done):
@@ -70,6 +84,7 @@ def main():
             sys.exit("a ROS master already runs on port %d" % port)
         seen, done = {}, threading.Event()
         start = time.monotonic()
+        boot_start = time.clock_gettime(time.CLOCK_BOOTTIME)
         watcher = threading.Thread(target=watch, args=(rosgraph.Master("/bench_first_scan_watch"),
                                                          start, seen, done), daemon=True)
         watcher.start()
@@ -87,9 +102,11 @@ def main():
         node = ros_bench.process_named(ros_bench.descendants(launch.pid), "bullet_sim_node")
         if node is None:
             sys.exit("bullet_sim_node is not running under roslaunch")
+        seen[PROCESS_STARTED] = started_after(node, boot_start)
         memory_mb = ros_bench.resident_mb(node)
         rospy.signal_shutdown("measured")
-    for name, _ in MILESTONES:
+    stages = [MILESTONES[0][0], MILESTONES[1][0], PROCESS_STARTED] + [m[0] for m in MILESTONES[2:]]
+    for name in stages:
         print("  %6s s  %s" % ("%.3f" % seen[name] if name in seen else "-", name))
     print("  %6.3f s  first /scan received" % launch_s)
     print("bullet_sim_node resident memory %.1f MB" % memory_mb)

@@ -1,5 +1,7 @@
 #include "config.h"
 
+#include <ros/names.h>
+
 #include <cmath>
 #include <sstream>
 
@@ -56,6 +58,12 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   require(std::isfinite(config.model_states_rate_hz) && config.model_states_rate_hz > 0,
           "~model_states_rate", config.model_states_rate_hz, "must be > 0 Hz");
   return config;
+}
+
+std::string commandLineWorldFile() {
+  const ros::M_string& remappings = ros::names::getUnresolvedRemappings();
+  const auto world = remappings.find("_world_file");
+  return world == remappings.end() ? "" : world->second;
 }
 
 }  // namespace bullet_sim_node

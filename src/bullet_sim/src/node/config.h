@@ -35,4 +35,9 @@ struct Config {
 /// Throws ConfigError naming the parameter and its value when one is missing or out of range.
 Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 
+/// The world file given on the command line as a private parameter (`_world_file:=PATH`,
+/// as gzserver starts the node), known after ros::init without asking the master; "" when
+/// it is not there (the parameter server may still hold ~world_file).
+std::string commandLineWorldFile();
+
 }  // namespace bullet_sim_node

@@ -29,8 +29,11 @@ void spawnStartRobot(const Config& config, SimRunner* runner) {
 
 SimulatorNode::SimulatorNode(const Config& config, const ros::NodeHandle& nh,
                              const ros::NodeHandle& gazebo_nh)
+    : SimulatorNode(config, bullet_sim::loadWorldFile(config.world_file), nh, gazebo_nh) {}
+
+SimulatorNode::SimulatorNode(const Config& config, const bullet_sim::WorldSpec& world,
+                             const ros::NodeHandle& nh, const ros::NodeHandle& gazebo_nh)
     : pacer_(config.real_time_factor) {
-  const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(config.world_file);
   logWarnings(config.world_file, world.warnings);
   bullet_sim::SimConfig sim_config;
   sim_config.physics_step_s =
@@ -53,6 +56,9 @@ SimulatorNode::SimulatorNode(const Config& config, const ros::NodeHandle& nh,
   ROS_INFO("world %s (%s), %s, physics step %g s, real-time factor %g%s", world.name.c_str(),
            config.world_file.c_str(), robot.c_str(), sim_config.physics_step_s,
            config.real_time_factor, config.start_paused ? ", paused" : "");
+  // Sim time runs from the first step on, as a Gazebo world's time runs from when the
+  // world starts: the wall time spent building the simulation is not caught up.
+  pacer_.restart(sim_->timeS());
   runner_->publishClock();
 }
 

@@ -11,6 +11,7 @@
 #include "topics/world_markers_io.h"
 
 #include <bullet_sim/simulation.h>
+#include <bullet_sim/world_spec.h>
 
 #include <ros/callback_queue.h>
 #include <ros/node_handle.h>
@@ -29,6 +30,9 @@ class SimulatorNode {
   /// everything. Throws bullet_sim::LoadError (the world or robot) naming the file,
   /// element and value.
   SimulatorNode(const Config& config, const ros::NodeHandle& nh, const ros::NodeHandle& gazebo_nh);
+  /// The same with the world of config.world_file already loaded.
+  SimulatorNode(const Config& config, const bullet_sim::WorldSpec& world,
+                const ros::NodeHandle& nh, const ros::NodeHandle& gazebo_nh);
   SimulatorNode(const SimulatorNode&) = delete;
   SimulatorNode& operator=(const SimulatorNode&) = delete;
 

@@ -44,6 +44,19 @@ class BadInput(unittest.TestCase):
         code, output = run_node("missing_world", "_world_file:=" + missing)
         self.assertFailsWith(code, output, missing, "does not exist")
 
+    def test_world_file_from_the_parameter_server(self):
+        # Not on the command line: the node reads ~world_file from the master, then loads.
+        missing = os.path.join(FIXTURES, "no_such_param.world")
+        rospy.set_param("/param_world/world_file", missing)
+        code, output = run_node("param_world")
+        self.assertFailsWith(code, output, missing, "does not exist")
+
+    def test_a_bad_parameter_is_reported_while_the_world_loads(self):
+        code, output = run_node("bad_rtf", "_world_file:=" + GOOD_WORLD, "_real_time_factor:=-1")
+        self.assertEqual(code, 1, output)
+        self.assertFailsWith(code, output, "~real_time_factor = -1 is invalid: must be >= 0")
+        self.assertNotIn("world ", output.split("FATAL")[0])  # nothing started before it
+
     def test_malformed_world(self):
         malformed = os.path.join(FIXTURES, "malformed.world")
         code, output = run_node("malformed_world", "_world_file:=" + malformed)
