@@ -6,8 +6,8 @@
 #include "gazebo_paths.h"
 #include "simulator_node.h"
 
+#include <bullet_sim/description/world_spec.h>
 #include <bullet_sim/errors.h>
-#include <bullet_sim/world_spec.h>
 
 #include <ros/callback_queue.h>
 #include <ros/ros.h>

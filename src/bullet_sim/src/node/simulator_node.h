@@ -10,8 +10,8 @@
 #include "services/physics_services.h"
 #include "topics/world_markers_io.h"
 
+#include <bullet_sim/description/world_spec.h>
 #include <bullet_sim/simulation.h>
-#include <bullet_sim/world_spec.h>
 
 #include <ros/callback_queue.h>
 #include <ros/node_handle.h>
