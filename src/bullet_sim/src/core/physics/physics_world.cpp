@@ -47,7 +47,34 @@ bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a
   return oa->getUserIndex() < 0 || oa->getUserIndex() != ob->getUserIndex();
 }
 
-PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
+StaticShapes::StaticShapes(const WorldSpec& spec) {
+  for (const StaticShape& s : spec.shapes) {
+    if (!s.collides) continue;
+    shapes_.push_back(makeCollisionShape(s, s.mesh.get(), Motion::Static));
+    placed_.push_back({shapes_.back().get(), toBt(toIsometry(s.pose)), s.friction});
+  }
+}
+
+std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticShapes& statics,
+                                                                 btCollisionWorld* world) {
+  std::vector<std::unique_ptr<btCollisionObject>> objects;
+  for (const StaticShapes::Placed& s : statics.placed()) {
+    auto obj = std::make_unique<btCollisionObject>();
+    obj->setCollisionShape(s.shape);
+    obj->setWorldTransform(s.pose);
+    obj->setFriction(s.friction);
+    obj->setUserIndex(-1);
+    // Bullet recomputes the bounding box of every "active" object each step;
+    // static shapes never move.
+    obj->setActivationState(ISLAND_SLEEPING);
+    world->addCollisionObject(obj.get(), btBroadphaseProxy::StaticFilter,
+                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    objects.push_back(std::move(obj));
+  }
+  return objects;
+}
+
+PhysicsWorld::PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity)
     : config_(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
       broadphase_(std::make_unique<btDbvtBroadphase>()),
@@ -56,23 +83,9 @@ PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
                                                         solver_.get(), config_.get())) {
   gContactAddedCallback = combineFriction;
   world_->getPairCache()->setOverlapFilterCallback(&filter_);
-  world_->setGravity(toBt(spec.gravity));
+  world_->setGravity(toBt(gravity));
   world_->setForceUpdateAllAabbs(false);
-  for (const StaticShape& s : spec.shapes) {
-    if (!s.collides) continue;
-    shapes_.push_back(makeCollisionShape(s, s.mesh.get(), Motion::Static));
-    auto obj = std::make_unique<btCollisionObject>();
-    obj->setCollisionShape(shapes_.back().get());
-    obj->setWorldTransform(toBt(toIsometry(s.pose)));
-    obj->setFriction(s.friction);
-    obj->setUserIndex(-1);
-    // Bullet recomputes the bounding box of every "active" object each step;
-    // static shapes never move.
-    obj->setActivationState(ISLAND_SLEEPING);
-    world_->addCollisionObject(obj.get(), btBroadphaseProxy::StaticFilter,
-                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    objects_.push_back(std::move(obj));
-  }
+  objects_ = addStaticObjects(statics, world_.get());
 }
 
 PhysicsWorld::~PhysicsWorld() {
