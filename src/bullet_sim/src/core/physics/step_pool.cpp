@@ -10,6 +10,19 @@ constexpr std::chrono::microseconds kSpin{200};
 
 void pause() { __builtin_ia32_pause(); }
 
+/// Waits for `done()`, spinning first, then giving the core away between looks: a thread
+/// it waits for may have been put off the core by the machine's other work.
+template <class Done>
+void waitFor(Done&& done) {
+  for (int spins = 0; !done(); ++spins) {
+    if (spins < 4096) {
+      pause();
+    } else {
+      std::this_thread::yield();
+    }
+  }
+}
+
 }  // namespace
 
 StepPool::StepPool(unsigned threads) {
@@ -30,6 +43,8 @@ void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
     for (size_t i = 0; i < n; ++i) work(i);
     return;
   }
+  // Helpers still leaving the last job read its pieces: wait for them before changing them.
+  waitFor([this] { return active_.load() == 0; });
   if (taken_.size() < n) taken_ = std::vector<std::atomic<bool>>(n);
   for (size_t i = 0; i < n; ++i) taken_[i].store(false, std::memory_order_relaxed);
   work_ = &work;
@@ -42,11 +57,10 @@ void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
     wake_.notify_all();
   }
   runShare(0);
-  while (finished_.load(std::memory_order_acquire) < n) pause();
-  // No helper joins the job from here; the next job waits for those still in it.
+  waitFor([this, n] { return finished_.load(std::memory_order_acquire) == n; });
+  // No helper joins the job from here, and one still in it finds every piece taken (and
+  // never calls `work`, which the caller may now destroy).
   open_.store(0);
-  while (active_.load() > 0) pause();
-  work_ = nullptr;
   if (error_) std::rethrow_exception(error_);
 }
 
