@@ -7,6 +7,11 @@ namespace {
 
 /// How long a helper spins for the next job before it sleeps.
 constexpr std::chrono::microseconds kSpin{200};
+/// After this many jobs in a row in which the caller waited for the helpers longer than it
+/// worked itself (a helper put off its core in the middle of a piece, on a machine busy with
+/// other work), the caller runs the next kAloneJobs jobs alone, then tries again.
+constexpr int kHeldUpLimit = 4;
+constexpr int kAloneJobs = 1000;
 
 void pause() { __builtin_ia32_pause(); }
 
@@ -39,7 +44,8 @@ StepPool::~StepPool() {
 }
 
 void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
-  if (helpers_.empty() || n < 2) {
+  if (helpers_.empty() || n < 2 || alone_ > 0) {
+    if (n >= 2 && alone_ > 0) --alone_;
     for (size_t i = 0; i < n; ++i) work(i);
     return;
   }
@@ -56,8 +62,16 @@ void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
     std::lock_guard<std::mutex> lock(mutex_);
     wake_.notify_all();
   }
+  const auto start = std::chrono::steady_clock::now();
   runShare(0);
+  const auto own_done = std::chrono::steady_clock::now();
   waitFor([this, n] { return finished_.load(std::memory_order_acquire) == n; });
+  const bool held_up = std::chrono::steady_clock::now() - own_done > own_done - start;
+  held_up_ = held_up ? held_up_ + 1 : 0;
+  if (held_up_ >= kHeldUpLimit) {
+    held_up_ = 0;
+    alone_ = kAloneJobs;
+  }
   // No helper joins the job from here, and one still in it finds every piece taken (and
   // never calls `work`, which the caller may now destroy).
   open_.store(0);

@@ -17,9 +17,10 @@ namespace bullet_sim {
 /// touch nothing of each other. Thread t (the caller is thread 0) first takes pieces t,
 /// t + threads, ..., so that a world keeps to one core's cache from step to step, then any
 /// piece not taken yet: a helper that the machine's other work keeps off its core delays
-/// nothing but the piece it holds. Between calls the helper threads wait spinning for a
-/// short while (a step's work comes every few tens of microseconds when the simulation runs
-/// fast), then sleep.
+/// nothing but the piece it holds. When such waits keep coming (the cores are busy with
+/// other work), the caller runs the next jobs alone for a while. Between calls the helper
+/// threads wait spinning for a short while (a step's work comes every few tens of
+/// microseconds when the simulation runs fast), then sleep.
 class StepPool {
  public:
   /// `threads` >= 1 counts the caller: threads - 1 helper threads are started.
@@ -48,6 +49,8 @@ class StepPool {
   std::exception_ptr error_;
   std::mutex error_mutex_;
   uint64_t jobs_ = 0;                     ///< jobs handed out so far
+  int held_up_ = 0;                       ///< jobs in a row the helpers held up
+  int alone_ = 0;                         ///< jobs the caller still runs alone
   std::atomic<uint64_t> open_{0};         ///< the job helpers may join; 0 = none
   std::atomic<size_t> finished_{0};       ///< pieces of the open job done
   std::atomic<unsigned> active_{0};       ///< helpers inside a job

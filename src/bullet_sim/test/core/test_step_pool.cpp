@@ -1,0 +1,41 @@
+// StepPool: every piece of every job runs once, on any number of threads.
+#include <atomic>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "physics/step_pool.h"
+
+using bullet_sim::StepPool;
+
+TEST(StepPool, RunsEveryPieceOnceInEveryJob) {
+  for (unsigned threads : {1u, 2u, 3u}) {
+    StepPool pool(threads);
+    EXPECT_EQ(pool.threads(), threads);
+    for (size_t n : {0u, 1u, 2u, 5u, 16u}) {
+      for (int job = 0; job < 200; ++job) {
+        std::vector<std::atomic<int>> runs(n);
+        pool.run(n, [&runs](size_t i) { runs[i].fetch_add(1); });
+        for (size_t i = 0; i < n; ++i) {
+          ASSERT_EQ(runs[i].load(), 1) << threads << " threads, " << n << " pieces, piece " << i;
+        }
+      }
+    }
+  }
+}
+
+TEST(StepPool, RethrowsWhatAPieceThrewAfterTheOthersRan) {
+  StepPool pool(2);
+  std::vector<std::atomic<int>> runs(8);
+  EXPECT_THROW(pool.run(8,
+                        [&runs](size_t i) {
+                          runs[i].fetch_add(1);
+                          if (i == 5) throw std::runtime_error("piece 5");
+                        }),
+               std::runtime_error);
+  for (size_t i = 0; i < runs.size(); ++i) EXPECT_EQ(runs[i].load(), 1) << "piece " << i;
+  std::atomic<int> after{0};
+  pool.run(4, [&after](size_t) { after.fetch_add(1); });
+  EXPECT_EQ(after.load(), 4);
+}
