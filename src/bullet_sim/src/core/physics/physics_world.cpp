@@ -75,12 +75,11 @@ std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticSha
 }
 
 PhysicsWorld::PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity)
-    : config_(std::make_unique<btDefaultCollisionConfiguration>()),
-      dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
-      broadphase_(std::make_unique<btDbvtBroadphase>()),
+    : backend_(std::make_unique<CollisionBackend>()),
       solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
-      world_(std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(),
-                                                        solver_.get(), config_.get())) {
+      world_(std::make_unique<btDiscreteDynamicsWorld>(&backend_->dispatcher,
+                                                        &backend_->broadphase, solver_.get(),
+                                                        &backend_->config)) {
   gContactAddedCallback = combineFriction;
   world_->getPairCache()->setOverlapFilterCallback(&filter_);
   world_->setGravity(toBt(gravity));

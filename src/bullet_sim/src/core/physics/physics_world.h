@@ -28,6 +28,14 @@ class StaticShapes {
   std::vector<Placed> placed_;
 };
 
+/// What a Bullet collision world works with besides its objects: configuration, dispatcher
+/// and broadphase (the world keeps pointers to them, so they do not move).
+struct CollisionBackend {
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+};
+
 /// Adds a static collision object for every shape of `statics` to `world`, as a world's
 /// walls and ground: they never move and do not collide with each other.
 std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticShapes& statics,
@@ -52,9 +60,7 @@ class PhysicsWorld {
     bool needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const override;
   };
   RobotPairFilter filter_;
-  std::unique_ptr<btDefaultCollisionConfiguration> config_;
-  std::unique_ptr<btCollisionDispatcher> dispatcher_;
-  std::unique_ptr<btDbvtBroadphase> broadphase_;
+  std::unique_ptr<CollisionBackend> backend_;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
   std::vector<std::unique_ptr<btCollisionObject>> objects_;

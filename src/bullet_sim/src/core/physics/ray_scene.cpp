@@ -3,11 +3,9 @@
 namespace bullet_sim {
 
 RayScene::RayScene(const StaticShapes& statics)
-    : config_(std::make_unique<btDefaultCollisionConfiguration>()),
-      dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
-      broadphase_(std::make_unique<btDbvtBroadphase>()),
-      world_(std::make_unique<btCollisionWorld>(dispatcher_.get(), broadphase_.get(),
-                                                config_.get())),
+    : backend_(std::make_unique<CollisionBackend>()),
+      world_(std::make_unique<btCollisionWorld>(&backend_->dispatcher, &backend_->broadphase,
+                                                &backend_->config)),
       statics_(addStaticObjects(statics, world_.get())) {}
 
 RayScene::~RayScene() {

@@ -34,9 +34,7 @@ class RayScene {
     const btRigidBody* body;
     std::unique_ptr<btCollisionObject> object;
   };
-  std::unique_ptr<btDefaultCollisionConfiguration> config_;
-  std::unique_ptr<btCollisionDispatcher> dispatcher_;
-  std::unique_ptr<btDbvtBroadphase> broadphase_;
+  std::unique_ptr<CollisionBackend> backend_;
   std::unique_ptr<btCollisionWorld> world_;
   std::vector<std::unique_ptr<btCollisionObject>> statics_;
   std::map<int, std::vector<StandIn>> robots_;
