@@ -7,11 +7,12 @@ namespace {
 
 /// How long a helper spins for the next job before it sleeps.
 constexpr std::chrono::microseconds kSpin{200};
-/// After this many jobs in a row in which the caller waited for the helpers longer than it
-/// worked itself (a helper put off its core in the middle of a piece, on a machine busy with
-/// other work), the caller runs the next kAloneJobs jobs alone, then tries again.
-constexpr int kHeldUpLimit = 4;
-constexpr int kAloneJobs = 1000;
+/// Every kWindowJobs jobs the caller compares how long it waited for the helpers with how
+/// long it worked itself; when it waited more than half as long (helpers put off their cores
+/// by the machine's other work, in the middle of a piece or of leaving a job), it runs the
+/// next kAloneJobs jobs alone, then tries again.
+constexpr int kWindowJobs = 64;
+constexpr int kAloneJobs = 2000;
 
 void pause() { __builtin_ia32_pause(); }
 
@@ -49,6 +50,8 @@ void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
     for (size_t i = 0; i < n; ++i) work(i);
     return;
   }
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   // Helpers still leaving the last job read its pieces: wait for them before changing them.
   waitFor([this] { return active_.load() == 0; });
   if (taken_.size() < n) taken_ = std::vector<std::atomic<bool>>(n);
@@ -62,15 +65,16 @@ void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
     std::lock_guard<std::mutex> lock(mutex_);
     wake_.notify_all();
   }
-  const auto start = std::chrono::steady_clock::now();
+  const Clock::time_point own_start = Clock::now();
   runShare(0);
-  const auto own_done = std::chrono::steady_clock::now();
+  const Clock::time_point own_done = Clock::now();
   waitFor([this, n] { return finished_.load(std::memory_order_acquire) == n; });
-  const bool held_up = std::chrono::steady_clock::now() - own_done > own_done - start;
-  held_up_ = held_up ? held_up_ + 1 : 0;
-  if (held_up_ >= kHeldUpLimit) {
-    held_up_ = 0;
-    alone_ = kAloneJobs;
+  worked_ += own_done - own_start;
+  waited_ += (Clock::now() - start) - (own_done - own_start);
+  if (++window_jobs_ == kWindowJobs) {
+    if (waited_ * 2 > worked_) alone_ = kAloneJobs;
+    window_jobs_ = 0;
+    worked_ = waited_ = Clock::duration::zero();
   }
   // No helper joins the job from here, and one still in it finds every piece taken (and
   // never calls `work`, which the caller may now destroy).

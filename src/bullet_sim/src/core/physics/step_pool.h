@@ -2,6 +2,7 @@
 #define BULLET_SIM_CORE_STEP_POOL_H
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <cstddef>
@@ -17,8 +18,8 @@ namespace bullet_sim {
 /// touch nothing of each other. Thread t (the caller is thread 0) first takes pieces t,
 /// t + threads, ..., so that a world keeps to one core's cache from step to step, then any
 /// piece not taken yet: a helper that the machine's other work keeps off its core delays
-/// nothing but the piece it holds. When such waits keep coming (the cores are busy with
-/// other work), the caller runs the next jobs alone for a while. Between calls the helper
+/// nothing but the piece it holds. When the caller waits for helpers more than half as long
+/// as it works (the cores are busy with other work), it runs the next jobs alone for a while. Between calls the helper
 /// threads wait spinning for a short while (a step's work comes every few tens of
 /// microseconds when the simulation runs fast), then sleep.
 class StepPool {
@@ -49,7 +50,8 @@ class StepPool {
   std::exception_ptr error_;
   std::mutex error_mutex_;
   uint64_t jobs_ = 0;                     ///< jobs handed out so far
-  int held_up_ = 0;                       ///< jobs in a row the helpers held up
+  int window_jobs_ = 0;                   ///< jobs since the caller last looked at its waits
+  std::chrono::steady_clock::duration worked_{}, waited_{};  ///< its time in those jobs
   int alone_ = 0;                         ///< jobs the caller still runs alone
   std::atomic<uint64_t> open_{0};         ///< the job helpers may join; 0 = none
   std::atomic<size_t> finished_{0};       ///< pieces of the open job done
