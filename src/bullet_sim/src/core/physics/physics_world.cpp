@@ -34,7 +34,19 @@ bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int
   return true;
 }
 
+/// Contacts a robot's home world keeps ready: a Burger on the round track has about ten.
+constexpr int kWorldPoolSize = 256;
+
+btDefaultCollisionConstructionInfo poolOf(int pool_size) {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = pool_size;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = pool_size;
+  return info;
+}
+
 }  // namespace
+
+CollisionBackend::CollisionBackend(int pool_size) : config(poolOf(pool_size)) {}
 
 bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a,
                                                             btBroadphaseProxy* b) const {
@@ -75,7 +87,7 @@ std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticSha
 }
 
 PhysicsWorld::PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity)
-    : backend_(std::make_unique<CollisionBackend>()),
+    : backend_(std::make_unique<CollisionBackend>(kWorldPoolSize)),
       solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
       world_(std::make_unique<btDiscreteDynamicsWorld>(&backend_->dispatcher,
                                                         &backend_->broadphase, solver_.get(),

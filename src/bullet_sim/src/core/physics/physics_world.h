@@ -29,8 +29,11 @@ class StaticShapes {
 };
 
 /// What a Bullet collision world works with besides its objects: configuration, dispatcher
-/// and broadphase (the world keeps pointers to them, so they do not move).
+/// and broadphase (the world keeps pointers to them, so they do not move). The configuration
+/// keeps `pool_size` contact manifolds and collision algorithms ready (Bullet's default,
+/// 4096 of each, is 4.5 MB, and there is a world per robot); more come from the heap.
 struct CollisionBackend {
+  explicit CollisionBackend(int pool_size);
   btDefaultCollisionConfiguration config;
   btCollisionDispatcher dispatcher{&config};
   btDbvtBroadphase broadphase;

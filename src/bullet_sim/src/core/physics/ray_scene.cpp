@@ -1,9 +1,15 @@
 #include "physics/ray_scene.h"
 
 namespace bullet_sim {
+namespace {
+
+/// Rays need no contact manifolds: the scene never runs collision detection.
+constexpr int kNoContacts = 1;
+
+}  // namespace
 
 RayScene::RayScene(const StaticShapes& statics)
-    : backend_(std::make_unique<CollisionBackend>()),
+    : backend_(std::make_unique<CollisionBackend>(kNoContacts)),
       world_(std::make_unique<btCollisionWorld>(&backend_->dispatcher, &backend_->broadphase,
                                                 &backend_->config)),
       statics_(addStaticObjects(statics, world_.get())) {}
