@@ -168,3 +168,24 @@ TEST(Threads, LidarSeesARobotSimulatedInAnotherWorld) {
   const LaserScanData scan = sim.readRay("looker", 0);
   EXPECT_NEAR(scan.ranges[90], 1.0 - std::sqrt(0.055 * 0.055 - dx * dx), 0.03);
 }
+
+TEST(Threads, RobotsInOneWorldCanBeDeletedAndResetInAnyOrder) {
+  for (const char* first : {"pusher", "pushed"}) {
+    SimConfig cfg;
+    cfg.threads = 2;
+    Simulation sim(bullet_sim_test::flatWorld(), cfg);
+    sim.spawnRobot("pusher", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+    sim.spawnRobot("pushed", bullet_sim_test::burgerSpec(), poseAt(0.3, 0, 0));
+    sim.spawnRobot("third", bullet_sim_test::burgerSpec(), poseAt(0.6, 0, 0));
+    sim.setCmdVel("pusher", 0.2, 0);
+    while (sim.timeS() < 1.5) sim.step();  // the three touch: one world
+    ASSERT_TRUE(sim.deleteRobot(first));
+    while (sim.timeS() < 2.0) sim.step();
+    sim.reset();
+    while (sim.timeS() < 0.5) sim.step();
+    for (const std::string& robot : sim.robotNames()) {
+      EXPECT_LT(std::fabs(sim.modelPose(robot).position.z()), 0.01) << robot << ", " << first;
+    }
+    EXPECT_EQ(sim.robotNames().size(), 2u);
+  }
+}
