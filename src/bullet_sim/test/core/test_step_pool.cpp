@@ -1,5 +1,6 @@
 // StepPool: every piece of every job runs once, on any number of threads.
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <vector>
 
@@ -38,4 +39,22 @@ TEST(StepPool, RethrowsWhatAPieceThrewAfterTheOthersRan) {
   std::atomic<int> after{0};
   pool.run(4, [&after](size_t) { after.fetch_add(1); });
   EXPECT_EQ(after.load(), 4);
+}
+
+TEST(StepPool, HelperChoiceTakesTheFasterWayAndTriesTheOtherAgain) {
+  using std::chrono::microseconds;
+  bullet_sim::HelperChoice choice;
+  std::vector<bool> ways;
+  // Helpers take 300 us a job of 10 pieces, the caller alone 100 us: 64 jobs a window.
+  for (int job = 0; job < 64 * 40; ++job) {
+    const bool helpers = choice.helpers();
+    if (job % 64 == 0) ways.push_back(helpers);
+    choice.record(microseconds(helpers ? 300 : 100), 10);
+  }
+  EXPECT_TRUE(ways[0]);   // helpers first
+  EXPECT_FALSE(ways[1]);  // then alone, to compare
+  int with_helpers = 0;
+  for (size_t w = 2; w < ways.size(); ++w) with_helpers += ways[w];
+  // Alone from then on, but for one window in 16 that tries the helpers again.
+  EXPECT_EQ(with_helpers, 2);
 }

@@ -1,18 +1,16 @@
 #include "physics/step_pool.h"
 
 #include <chrono>
+#include <utility>
 
 namespace bullet_sim {
 namespace {
 
 /// How long a helper spins for the next job before it sleeps.
 constexpr std::chrono::microseconds kSpin{200};
-/// Every kWindowJobs jobs the caller compares how long it waited for the helpers with how
-/// long it worked itself; when it waited more than half as long (helpers put off their cores
-/// by the machine's other work, in the middle of a piece or of leaving a job), it runs the
-/// next kAloneJobs jobs alone, then tries again.
+/// Jobs in a window of HelperChoice, and how often the way not chosen is tried again.
 constexpr int kWindowJobs = 64;
-constexpr int kAloneJobs = 2000;
+constexpr int kProbeEvery = 16;
 
 void pause() { __builtin_ia32_pause(); }
 
@@ -44,42 +42,64 @@ StepPool::~StepPool() {
   for (std::thread& t : helpers_) t.join();
 }
 
+void HelperChoice::record(std::chrono::steady_clock::duration took, size_t pieces) {
+  took_ += took;
+  pieces_ += pieces;
+  if (++jobs_ < kWindowJobs) return;
+  const double per_piece = std::chrono::duration<double>(took_).count() / pieces_;
+  (helpers_now_ ? with_helpers_ : alone_) = per_piece;
+  jobs_ = 0;
+  pieces_ = 0;
+  took_ = std::chrono::steady_clock::duration::zero();
+  ++windows_;
+  const bool better_with_helpers = alone_ < 0 || (with_helpers_ >= 0 && with_helpers_ < alone_);
+  helpers_now_ = (windows_ % kProbeEvery == 1) ? !better_with_helpers : better_with_helpers;
+}
+
 void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
-  if (helpers_.empty() || n < 2 || alone_ > 0) {
-    if (n >= 2 && alone_ > 0) --alone_;
-    for (size_t i = 0; i < n; ++i) work(i);
-    return;
+  error_ = nullptr;
+  if (helpers_.empty() || n < 2) {
+    runAlone(n, work);
+  } else {
+    const auto start = std::chrono::steady_clock::now();
+    if (choice_.helpers()) {
+      runWithHelpers(n, work);
+    } else {
+      runAlone(n, work);
+    }
+    choice_.record(std::chrono::steady_clock::now() - start, n);
   }
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
+  if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+}
+
+void StepPool::runAlone(size_t n, const std::function<void(size_t)>& work) {
+  for (size_t i = 0; i < n; ++i) {
+    try {
+      work(i);
+    } catch (...) {
+      if (!error_) error_ = std::current_exception();
+    }
+  }
+}
+
+void StepPool::runWithHelpers(size_t n, const std::function<void(size_t)>& work) {
   // Helpers still leaving the last job read its pieces: wait for them before changing them.
   waitFor([this] { return active_.load() == 0; });
   if (taken_.size() < n) taken_ = std::vector<std::atomic<bool>>(n);
   for (size_t i = 0; i < n; ++i) taken_[i].store(false, std::memory_order_relaxed);
   work_ = &work;
   pieces_ = n;
-  error_ = nullptr;
   finished_.store(0);
   open_.store(++jobs_);
   if (sleepers_.load() > 0) {
     std::lock_guard<std::mutex> lock(mutex_);
     wake_.notify_all();
   }
-  const Clock::time_point own_start = Clock::now();
   runShare(0);
-  const Clock::time_point own_done = Clock::now();
   waitFor([this, n] { return finished_.load(std::memory_order_acquire) == n; });
-  worked_ += own_done - own_start;
-  waited_ += (Clock::now() - start) - (own_done - own_start);
-  if (++window_jobs_ == kWindowJobs) {
-    if (waited_ * 2 > worked_) alone_ = kAloneJobs;
-    window_jobs_ = 0;
-    worked_ = waited_ = Clock::duration::zero();
-  }
   // No helper joins the job from here, and one still in it finds every piece taken (and
   // never calls `work`, which the caller may now destroy).
   open_.store(0);
-  if (error_) std::rethrow_exception(error_);
 }
 
 void StepPool::runPiece(size_t i) {

@@ -14,14 +14,32 @@
 
 namespace bullet_sim {
 
+/// Whether a StepPool's jobs run on its helpers or on the caller alone, chosen window by
+/// window (64 jobs): the way that took less wall time per piece when last tried; the other
+/// is tried again every 16 windows, as the machine's other work comes and goes. On cores
+/// busy with other work a helper put off its core holds up every job it has a piece of, and
+/// the caller alone is then faster.
+class HelperChoice {
+ public:
+  bool helpers() const { return helpers_now_; }
+  /// A job of `pieces` took `took`, run the way helpers() said.
+  void record(std::chrono::steady_clock::duration took, size_t pieces);
+
+ private:
+  bool helpers_now_ = true;
+  double with_helpers_ = -1, alone_ = -1;  ///< seconds per piece when last tried; -1 never
+  int jobs_ = 0, windows_ = 0;
+  size_t pieces_ = 0;
+  std::chrono::steady_clock::duration took_{};
+};
+
 /// Threads that share out independent pieces of work, such as the steps of worlds that
 /// touch nothing of each other. Thread t (the caller is thread 0) first takes pieces t,
 /// t + threads, ..., so that a world keeps to one core's cache from step to step, then any
 /// piece not taken yet: a helper that the machine's other work keeps off its core delays
-/// nothing but the piece it holds. When the caller waits for helpers more than half as long
-/// as it works (the cores are busy with other work), it runs the next jobs alone for a while. Between calls the helper
-/// threads wait spinning for a short while (a step's work comes every few tens of
-/// microseconds when the simulation runs fast), then sleep.
+/// nothing but the piece it holds. Whether helpers are used at all is a HelperChoice.
+/// Between jobs the helper threads wait spinning for a short while (a step's work comes
+/// every few tens of microseconds when the simulation runs fast), then sleep.
 class StepPool {
  public:
   /// `threads` >= 1 counts the caller: threads - 1 helper threads are started.
@@ -31,14 +49,16 @@ class StepPool {
   StepPool& operator=(const StepPool&) = delete;
 
   unsigned threads() const { return static_cast<unsigned>(helpers_.size()) + 1; }
-  /// Calls work(i) once for each i in [0, n) and returns when all have returned; rethrows
-  /// the first exception a piece threw.
+  /// Calls work(i) once for each i in [0, n) and returns when all have returned; then
+  /// rethrows the first exception a piece threw (the other pieces run all the same).
   void run(size_t n, const std::function<void(size_t)>& work);
 
  private:
   void helperLoop(unsigned thread);
   /// Waits until a job other than `seen` is open; false when the pool stops.
   bool waitForJob(uint64_t seen, uint64_t* job);
+  void runWithHelpers(size_t n, const std::function<void(size_t)>& work);
+  void runAlone(size_t n, const std::function<void(size_t)>& work);
   void runShare(unsigned thread);
   void runPiece(size_t i);
 
@@ -50,9 +70,7 @@ class StepPool {
   std::exception_ptr error_;
   std::mutex error_mutex_;
   uint64_t jobs_ = 0;                     ///< jobs handed out so far
-  int window_jobs_ = 0;                   ///< jobs since the caller last looked at its waits
-  std::chrono::steady_clock::duration worked_{}, waited_{};  ///< its time in those jobs
-  int alone_ = 0;                         ///< jobs the caller still runs alone
+  HelperChoice choice_;
   std::atomic<uint64_t> open_{0};         ///< the job helpers may join; 0 = none
   std::atomic<size_t> finished_{0};       ///< pieces of the open job done
   std::atomic<unsigned> active_{0};       ///< helpers inside a job
