@@ -1,4 +1,4 @@
-// StepPool: every piece of every job runs once, on any number of threads.
+// StepPool: every piece of every job runs once, on any number of threads; HelperChoice.
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "physics/helper_choice.h"
 #include "physics/step_pool.h"
 
 using bullet_sim::StepPool;

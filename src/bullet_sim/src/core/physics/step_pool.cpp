@@ -8,9 +8,6 @@ namespace {
 
 /// How long a helper spins for the next job before it sleeps.
 constexpr std::chrono::microseconds kSpin{200};
-/// Jobs in a window of HelperChoice, and how often the way not chosen is tried again.
-constexpr int kWindowJobs = 64;
-constexpr int kProbeEvery = 16;
 
 void pause() { __builtin_ia32_pause(); }
 
@@ -40,20 +37,6 @@ StepPool::~StepPool() {
   }
   wake_.notify_all();
   for (std::thread& t : helpers_) t.join();
-}
-
-void HelperChoice::record(std::chrono::steady_clock::duration took, size_t pieces) {
-  took_ += took;
-  pieces_ += pieces;
-  if (++jobs_ < kWindowJobs) return;
-  const double per_piece = std::chrono::duration<double>(took_).count() / pieces_;
-  (helpers_now_ ? with_helpers_ : alone_) = per_piece;
-  jobs_ = 0;
-  pieces_ = 0;
-  took_ = std::chrono::steady_clock::duration::zero();
-  ++windows_;
-  const bool better_with_helpers = alone_ < 0 || (with_helpers_ >= 0 && with_helpers_ < alone_);
-  helpers_now_ = (windows_ % kProbeEvery == 1) ? !better_with_helpers : better_with_helpers;
 }
 
 void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
