@@ -61,14 +61,19 @@ RATIOS = (
     ("vs_mujoco_node", "node", "mujoco", False),
     ("vs_mujoco_core", "core", "mujoco", False),
     ("vs_mujoco_camera", "camera_ours", "camera_mujoco", True),
+    ("vs_mujoco_depth", "depth_ours", "depth_mujoco", True),
     ("vs_pybullet_node", "node", "pybullet", False),
 )
+
+# Real-time factors (medians) on the summary line: the robots in one node, as a nodelet,
+# and in the core alone on every thread and on one.
+LINE_FIGURES = ("robots_1", "robots_4", "robots_16", "robots_nodelet_16", "robots_core_1",
+                "robots_core_16", "robots_core_16_1thread")
 
 
 # Ratios shown in the table only: the single-process runs by CPU time, which a shared
 # machine disturbs less than wall time.
 TABLE_RATIOS = RATIOS + (
-    (None, "depth_ours", "depth_mujoco", True),
     (None, "core_cpu", "mujoco_cpu", False),
     (None, "core_cpu", "pybullet_cpu", False),
 )
@@ -105,5 +110,12 @@ def table(measurements, results):
     return "\n".join(lines)
 
 
-def last_line(results):
-    return " ".join("%s=%.2f" % (key, ratio(results, n, d, inv)) for key, n, d, inv in RATIOS)
+def last_line(results, loadavg):
+    """The one summary line: the ratios to MuJoCo and PyBullet, the robots' real-time
+    factors (medians) and the load average (1, 5, 15 minutes) when it was printed."""
+    parts = ["%s=%.2f" % (key, ratio(results, n, d, inv)) for key, n, d, inv in RATIOS
+             if n in results and d in results]
+    parts += ["%s=%.1f" % (key, statistics.median(results[key])) for key in LINE_FIGURES
+              if key in results]
+    parts.append("loadavg=%.2f/%.2f/%.2f" % tuple(loadavg))
+    return " ".join(parts)

@@ -15,7 +15,10 @@ With --depth every Burger's camera is a depth camera (ros_bench.depth_burger_urd
 colour and depth images and point cloud (640 x 480, 30 Hz) are subscribed too; it prints
 which share of them arrived (a publisher drops what its subscriber cannot take in time).
 
-Usage: multi_robot.py [--in-process] [--depth] LISTENER_BINARY ROBOTS SIM_SECONDS
+With --threads N the simulator steps its physics on N threads (its ~threads parameter;
+default: the machine's hardware threads).
+
+Usage: multi_robot.py [--in-process] [--depth] [--threads N] LISTENER_BINARY ROBOTS SIM_SECONDS
        (BENCH_ROS_PORT, default 11461)
 """
 import os
@@ -132,28 +135,34 @@ def check_rates(output, count, depth):
     return min(1.0, sum(rates[t] for t in camera) / sum(camera.values()))
 
 
-def simulator_parameters(pose):
+def simulator_parameters(pose, threads=None):
     """bullet_sim_node's private parameters: as fast as possible, paused until the robots
     have their commands and the listener its subscriptions, the first robot from
-    robot_description at `pose`."""
+    robot_description at `pose`; ~threads if given (else the node's default)."""
     x, y, yaw = pose
-    return {"world_file": ros_bench.WORLD, "real_time_factor": "0", "paused": "true",
-            "robot_name": "turtlebot3_burger", "spawn_x": "%g" % x, "spawn_y": "%g" % y,
-            "spawn_yaw": "%g" % yaw}
+    parameters = {"world_file": ros_bench.WORLD, "real_time_factor": "0", "paused": "true",
+                  "robot_name": "turtlebot3_burger", "spawn_x": "%g" % x, "spawn_y": "%g" % y,
+                  "spawn_yaw": "%g" % yaw}
+    if threads is not None:
+        parameters["threads"] = str(threads)
+    return parameters
 
 
 def main():
     args = sys.argv[1:]
-    options = set()
-    while args and args[0] in ("--in-process", "--depth"):
-        options.add(args.pop(0))
+    options, threads = set(), None
+    while args and args[0] in ("--in-process", "--depth", "--threads"):
+        option = args.pop(0)
+        if option == "--threads":
+            threads = int(args.pop(0))
+        options.add(option)
     in_process, depth = "--in-process" in options, "--depth" in options
     listener, count, sim_s = args[0], int(args[1]), float(args[2])
     port = int(os.environ.get("BENCH_ROS_PORT", "11461"))
     env = ros_bench.ros_env(port)
     poses = scenario.circle_starts(ros_bench.WORLD, count)
     work = tempfile.mkdtemp()
-    parameters = simulator_parameters(poses[0])
+    parameters = simulator_parameters(poses[0], threads)
     listen = ([listener] + (["--camera"] if depth else []) + [str(WARMUP_S), str(sim_s)]
               + namespaces(count))
     with ros_bench.Processes() as procs:

@@ -38,5 +38,17 @@ def test_table_and_last_line_give_ratios_to_the_peers():
     assert "| node | 100x (90-110) | 0.83x MuJoCo, 5.00x PyBullet |" in text
     assert "| pybullet | 20.0x (20.0-20.0) |" in text
     assert "| camera_ours | 0.50 ms (0.50-0.50) | 10.00x MuJoCo |" in text
-    assert last_line(results) == ("vs_mujoco_node=0.83 vs_mujoco_core=1.33 "
-                                  "vs_mujoco_camera=10.00 vs_pybullet_node=5.00")
+    assert last_line(results, (1.5, 2.25, 3.0)) == (
+        "vs_mujoco_node=0.83 vs_mujoco_core=1.33 vs_mujoco_camera=10.00 vs_pybullet_node=5.00 "
+        "loadavg=1.50/2.25/3.00")
+
+
+def test_last_line_adds_depth_and_the_robot_figures():
+    results = {"node": [100], "core": [160], "mujoco": [120], "pybullet": [20],
+               "camera_ours": [0.5], "camera_mujoco": [5.0], "depth_ours": [0.6],
+               "depth_mujoco": [6.0], "robots_1": [70, 74, 80], "robots_16": [5.2, 5.3, 6.1],
+               "robots_core_16": [9.0], "robots_core_16_1thread": [6.3]}
+    assert last_line(results, (1.0, 1.0, 1.0)) == (
+        "vs_mujoco_node=0.83 vs_mujoco_core=1.33 vs_mujoco_camera=10.00 vs_mujoco_depth=10.00 "
+        "vs_pybullet_node=5.00 robots_1=74.0 robots_16=5.3 robots_core_16=9.0 "
+        "robots_core_16_1thread=6.3 loadavg=1.00/1.00/1.00")

@@ -8,7 +8,9 @@
 // them) it runs one Burger per line instead, each driving the command's circle (0.1 m/s,
 // 0.3 rad/s) with every sensor read, and checks that each stayed on its circle.
 //
-// Usage: bullet_sim_bench <robot.urdf> <world.sdf> [sim_seconds [poses_file]]
+// --threads N steps the physics on N threads (default: the machine's hardware threads).
+//
+// Usage: bullet_sim_bench [--threads N] <robot.urdf> <world.sdf> [sim_seconds [poses_file]]
 #include <algorithm>
 #include <chrono>
 #include <ctime>
@@ -116,18 +118,40 @@ bool onTheirCircles(const bullet_sim::Simulation& sim, const std::vector<Start>&
   return false;
 }
 
+/// Takes "--threads N" out of the arguments; 0 (the machine's threads) without it.
+unsigned takeThreads(int* argc, char** argv) {
+  for (int i = 1; i + 1 < *argc; ++i) {
+    if (std::string(argv[i]) != "--threads") continue;
+    const int n = std::atoi(argv[i + 1]);
+    if (n < 1) throw std::invalid_argument(std::string("--threads: not a count >= 1: ") + argv[i + 1]);
+    for (int j = i; j + 2 < *argc; ++j) argv[j] = argv[j + 2];
+    *argc -= 2;
+    return static_cast<unsigned>(n);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  bullet_sim::SimConfig cfg;
+  try {
+    cfg.threads = takeThreads(&argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
   if (argc < 3) {
-    std::fprintf(stderr, "usage: %s <robot.urdf> <world.sdf> [sim_seconds]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s [--threads N] <robot.urdf> <world.sdf> [sim_seconds [poses_file]]\n",
+                 argv[0]);
     return 2;
   }
   const double sim_seconds = argc > 3 ? std::atof(argv[3]) : 60.0;
   try {
     const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(argv[1]);
     const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[2]);
-    bullet_sim::Simulation sim(world, bullet_sim::SimConfig());
+    bullet_sim::Simulation sim(world, cfg);
+    std::printf("threads: %u\n", sim.threads());
     const std::vector<Start> starts =
         argc > 4 ? readStarts(argv[4]) : std::vector<Start>{{0.0, 0.0, 1.5675}};
     const bool circles = argc > 4;

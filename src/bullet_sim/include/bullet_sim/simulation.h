@@ -25,6 +25,10 @@ struct SimConfig {
   /// A robot whose last setCmdVel is older than this (sim seconds) is given a zero command;
   /// 0 = never (Gazebo's diff drive keeps the last command forever).
   double cmd_vel_timeout_s = 0;
+  /// Threads that step the robots' physics (robots that cannot touch each other within a
+  /// step are simulated apart, in parallel); 0 = the machine's hardware threads, 1 = the
+  /// calling thread only. Results are the same to the bit whatever the number.
+  unsigned threads = 0;
 };
 
 /// How a model stands: upright or tipped over, free or pushed into a static body.
@@ -63,6 +67,8 @@ class Simulation {
   /// period elapsed at this step. Nothing is computed for them here.
   std::vector<DueSensor> step();
   double timeS() const;
+  /// The threads that step the physics (SimConfig::threads, 0 resolved).
+  unsigned threads() const;
   /// Sim time to 0, robots back to their spawn poses at rest, commands zero, external
   /// wrenches and efforts cleared.
   void reset();

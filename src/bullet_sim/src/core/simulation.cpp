@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "bullet_sim/errors.h"
 #include "description/robot_plan.h"
@@ -57,19 +58,15 @@ Simulation::Simulation(const WorldSpec& world, const SimConfig& cfg)
 
 Simulation::~Simulation() = default;
 
-void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, const Pose3& pose) {
-  if (impl_->robots.count(name)) throw LoadError("a robot named '" + name + "' already exists");
-  if (!spec.urdf) throw LoadError("robot '" + name + "': the spec holds no parsed URDF");
-  auto r = std::make_unique<Impl::Robot>();
-  r->spec = spec;
-  r->T_world_spawn = toIsometry(pose) * toIsometry(spec.root_link_in_model);
-  RobotPlan plan = planRobot(spec);
-  r->spec.warnings.insert(r->spec.warnings.end(), plan.warnings.begin(), plan.warnings.end());
-  for (const std::string& warning : plan.warnings)
-    impl_->pending_warnings.push_back("model '" + name + "': " + warning);
-  r->id = impl_->next_robot_id;
-  r->physics = std::make_unique<PhysicsRobot>(impl_->physics->dynamics(), r->id, std::move(plan),
-                                              r->T_world_spawn);
+unsigned Simulation::Impl::threadCount(const SimConfig& c) {
+  if (c.threads > 0) return c.threads;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+unsigned Simulation::threads() const { return impl_->physics->threads(); }
+
+void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
+  const RobotSpec& spec = r->spec;
   for (const RaySpec& s : spec.rays) requireLink(*r->physics, name, "ray sensor '" + s.name + "'", s.link);
   for (const ImuSpec& s : spec.imus) requireLink(*r->physics, name, "IMU '" + s.name + "'", s.link);
   for (const CameraSpec& s : spec.cameras) {
@@ -86,15 +83,43 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
   }
   r->imus.resize(spec.imus.size());
   r->schedule = SensorSchedule(name, spec, joint_state_rate_hz);
-  r->schedule.startAfter(impl_->steps, impl_->cfg.physics_step_s);
-  impl_->seedSensors(name, r.get());
+  r->schedule.startAfter(steps, cfg.physics_step_s);
+  seedSensors(name, r);
+}
+
+void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, const Pose3& pose) {
+  if (impl_->robots.count(name)) throw LoadError("a robot named '" + name + "' already exists");
+  if (!spec.urdf) throw LoadError("robot '" + name + "': the spec holds no parsed URDF");
+  auto r = std::make_unique<Impl::Robot>();
+  r->spec = spec;
+  r->T_world_spawn = toIsometry(pose) * toIsometry(spec.root_link_in_model);
+  RobotPlan plan = planRobot(spec);
+  r->spec.warnings.insert(r->spec.warnings.end(), plan.warnings.begin(), plan.warnings.end());
+  for (const std::string& warning : plan.warnings)
+    impl_->pending_warnings.push_back("model '" + name + "': " + warning);
+  r->id = impl_->next_robot_id;
+  try {
+    impl_->buildPhysics(r.get(), std::move(plan));
+    impl_->equipRobot(name, r.get());
+  } catch (...) {
+    r->physics.reset();
+    impl_->physics->dropHome(r->id);
+    throw;
+  }
+  impl_->physics->attach(r->id, r->physics.get());
   ++impl_->next_robot_id;
   impl_->robots[name] = std::move(r);
 }
 
 bool Simulation::deleteRobot(const std::string& name) {
   impl_->forces.clearRobot(name);
-  return impl_->robots.erase(name) > 0;
+  const auto it = impl_->robots.find(name);
+  if (it == impl_->robots.end()) return false;
+  const int id = it->second->id;
+  impl_->physics->detach(id);
+  impl_->robots.erase(it);
+  impl_->physics->dropHome(id);
+  return true;
 }
 
 std::vector<std::string> Simulation::robotNames() const {
@@ -148,14 +173,15 @@ void Simulation::reset() {
   // does not clear; a fresh world built in spawn order replays a run exactly.
   std::map<int, std::pair<std::string, Impl::Robot*>> by_id;
   for (auto& entry : impl_->robots) {
+    impl_->physics->detach(entry.second->id);
     entry.second->physics.reset();
     by_id[entry.second->id] = {entry.first, entry.second.get()};
   }
-  impl_->physics = std::make_unique<PhysicsWorld>(impl_->world);
+  impl_->physics = std::make_unique<PhysicsWorlds>(impl_->world, Impl::threadCount(impl_->cfg));
   for (auto& entry : by_id) {
     Impl::Robot& r = *entry.second.second;
-    r.physics = std::make_unique<PhysicsRobot>(impl_->physics->dynamics(), r.id,
-                                               planRobot(r.spec), r.T_world_spawn);
+    impl_->buildPhysics(&r, planRobot(r.spec));
+    impl_->physics->attach(r.id, r.physics.get());
     if (r.drive) r.drive->reset();
     r.schedule.restart();
     impl_->seedSensors(entry.second.first, &r);
@@ -227,7 +253,7 @@ LaserScanData Simulation::readRay(const std::string& robot, size_t index) {
   LaserScanData scan;
   scan.time_s = timeS();
   const Eigen::Isometry3d T_world_sensor = r.physics->linkPose(spec.link) * toIsometry(spec.pose_in_link);
-  castScan(*impl_->physics->dynamics(), T_world_sensor, spec, &r.ray_rngs[index], &scan);
+  castScan(impl_->physics->rayWorld(), T_world_sensor, spec, &r.ray_rngs[index], &scan);
   return scan;
 }
 

@@ -157,7 +157,7 @@ Eigen::Vector3d Simulation::gravity() const { return impl_->world.gravity; }
 
 void Simulation::setGravity(const Eigen::Vector3d& gravity_mps2) {
   impl_->world.gravity = gravity_mps2;
-  impl_->physics->dynamics()->setGravity(toBt(gravity_mps2));
+  impl_->physics->setGravity(gravity_mps2);
   for (auto& r : impl_->robots) r.second->physics->wake();
 }
 

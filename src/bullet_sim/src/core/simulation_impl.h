@@ -17,7 +17,7 @@
 #include "bullet_sim/world/external_forces.h"
 #include "physics/diff_drive.h"
 #include "physics/physics_robot.h"
-#include "physics/physics_world.h"
+#include "physics/physics_worlds.h"
 #include "sensors/imu_sensor.h"
 #include "sensors/sensor_schedule.h"
 
@@ -41,7 +41,22 @@ struct Simulation::Impl {
   };
 
   Impl(const WorldSpec& w, const SimConfig& c)
-      : world(w), cfg(c), physics(std::make_unique<PhysicsWorld>(w)) {}
+      : world(w), cfg(c), physics(std::make_unique<PhysicsWorlds>(w, threadCount(c))) {}
+
+  /// SimConfig::threads, 0 standing for the machine's hardware threads.
+  static unsigned threadCount(const SimConfig& c);
+
+  /// Checks that the sensors and the drive of robot r (built) name its links and joints,
+  /// and sets up its drive, sensors and their schedule.
+  /// @throws LoadError naming what is missing.
+  void equipRobot(const std::string& name, Robot* r);
+
+  /// Builds robot r's bodies in a home world of its own; physics->attach() them once the
+  /// robot is complete.
+  void buildPhysics(Robot* r, RobotPlan plan) {
+    btDiscreteDynamicsWorld* home = physics->addHome(r->id);
+    r->physics = std::make_unique<PhysicsRobot>(home, r->id, std::move(plan), r->T_world_spawn);
+  }
 
   Robot& robot(const std::string& name) {
     auto it = robots.find(name);
@@ -68,7 +83,7 @@ struct Simulation::Impl {
 
   WorldSpec world;  ///< as loaded, with the gravity currently set
   SimConfig cfg;
-  std::unique_ptr<PhysicsWorld> physics;
+  std::unique_ptr<PhysicsWorlds> physics;
   std::map<std::string, std::unique_ptr<Robot>> robots;
   /// Steps since `epoch_s`, the sim time of the last physics-step change: sensor
   /// schedules count in steps of the current length from there.

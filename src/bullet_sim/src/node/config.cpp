@@ -34,6 +34,7 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   private_nh.param("real_time_factor", config.real_time_factor, config.real_time_factor);
   private_nh.param("paused", config.start_paused, config.start_paused);
   private_nh.param("seed", config.seed, config.seed);
+  private_nh.param("threads", config.threads, config.threads);
   private_nh.param("cmd_vel_timeout", config.cmd_vel_timeout_s, config.cmd_vel_timeout_s);
   private_nh.param("spawn_x", config.spawn_x_m, config.spawn_x_m);
   private_nh.param("spawn_y", config.spawn_y_m, config.spawn_y_m);
@@ -47,6 +48,8 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   require(std::isfinite(config.real_time_factor) && config.real_time_factor >= 0,
           "~real_time_factor", config.real_time_factor, "must be >= 0 (0 = as fast as possible)");
   require(config.seed >= 0, "~seed", config.seed, "must be >= 0");
+  require(config.threads >= 0 && config.threads <= 256, "~threads", config.threads,
+          "must be in [0, 256] (0 = the machine's hardware threads)");
   require(std::isfinite(config.cmd_vel_timeout_s) && config.cmd_vel_timeout_s >= 0,
           "~cmd_vel_timeout", config.cmd_vel_timeout_s, "must be >= 0 s (0 = never)");
   require(std::isfinite(config.spawn_x_m), "~spawn_x", config.spawn_x_m, "must be finite");

@@ -19,6 +19,7 @@ struct Config {
   double real_time_factor = 1;       ///< ~real_time_factor: 1 real time, k faster, 0 unpaced
   bool start_paused = false;         ///< ~paused
   int seed = 1;                      ///< ~seed of every sensor noise source
+  int threads = 0;                   ///< ~threads stepping the physics; 0 = hardware threads
   double cmd_vel_timeout_s = 0;      ///< ~cmd_vel_timeout: stop a robot whose commands stop
                                      ///< for this long (sim s); 0 = never, as Gazebo
   double spawn_x_m = 0, spawn_y_m = 0, spawn_yaw_rad = 0;  ///< ~spawn_x, ~spawn_y, ~spawn_yaw

@@ -39,6 +39,7 @@ SimulatorNode::SimulatorNode(const Config& config, const bullet_sim::WorldSpec& 
   sim_config.physics_step_s =
       config.physics_step_s > 0 ? config.physics_step_s : world.max_step_size_s;
   sim_config.seed = static_cast<uint64_t>(config.seed);
+  sim_config.threads = static_cast<unsigned>(config.threads);
   sim_config.cmd_vel_timeout_s = config.cmd_vel_timeout_s;
   sim_ = std::make_unique<bullet_sim::Simulation>(world, sim_config);
   runner_ = std::make_unique<SimRunner>(*sim_, nh, gazebo_nh, config.start_paused,

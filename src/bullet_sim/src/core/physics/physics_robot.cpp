@@ -95,14 +95,63 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   bodies_.push_back(std::move(body));
   Body& stored = bodies_.back();
   stored.rigid->setUserPointer(&stored.material);
-  if (plan.collisions.empty()) {
-    // A link without collision (the flag) is never touched and never seen by rays.
-    world_->addRigidBody(stored.rigid.get(), 0, 0);
-  } else {
+  if (!plan.collisions.empty()) {
     stored.rigid->setCollisionFlags(stored.rigid->getCollisionFlags() |
                                     btCollisionObject::CF_CUSTOM_MATERIAL_CALLBACK);
-    world_->addRigidBody(stored.rigid.get());
   }
+  addBody(stored.rigid.get(), !plan.collisions.empty());
+}
+
+void PhysicsRobot::addBody(btRigidBody* body, bool collides) {
+  // A link without collision (the flag) is never touched and never seen by rays.
+  if (collides) {
+    world_->addRigidBody(body);
+  } else {
+    world_->addRigidBody(body, 0, 0);
+  }
+}
+
+void PhysicsRobot::moveToWorld(btDiscreteDynamicsWorld* world) {
+  if (world == world_) return;
+  for (auto& h : hinges_) world_->removeConstraint(h.get());
+  for (auto& b : bodies_) world_->removeRigidBody(b.rigid.get());
+  world_ = world;
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    addBody(bodies_[i].rigid.get(), !plan_.bodies[i].collisions.empty());
+  }
+  for (auto& h : hinges_) world_->addConstraint(h.get(), true);
+}
+
+std::vector<const btRigidBody*> PhysicsRobot::collidingBodies() const {
+  std::vector<const btRigidBody*> colliding;
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    if (!plan_.bodies[i].collisions.empty()) colliding.push_back(bodies_[i].rigid.get());
+  }
+  return colliding;
+}
+
+bool PhysicsRobot::bounds(btVector3* aabb_min, btVector3* aabb_max, double* speed_mps) const {
+  bool any = false;
+  *speed_mps = 0;
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    if (plan_.bodies[i].collisions.empty()) continue;
+    const btRigidBody* body = bodies_[i].rigid.get();
+    btVector3 lo, hi;
+    body->getCollisionShape()->getAabb(body->getWorldTransform(), lo, hi);
+    if (!any) {
+      *aabb_min = lo;
+      *aabb_max = hi;
+    } else {
+      aabb_min->setMin(lo);
+      aabb_max->setMax(hi);
+    }
+    any = true;
+    // A point of the body is at most the box's diagonal from its centre of mass.
+    const double speed = body->getLinearVelocity().length() +
+                         body->getAngularVelocity().length() * (hi - lo).length();
+    *speed_mps = std::max(*speed_mps, speed);
+  }
+  return any;
 }
 
 void PhysicsRobot::placeBodies(const Eigen::Isometry3d& T_world_model) {

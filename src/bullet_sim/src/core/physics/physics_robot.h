@@ -67,6 +67,16 @@ class PhysicsRobot {
   /// Tracks the hinge angles across +-pi; called after every physics step.
   void updateJointAngles();
 
+  /// Takes the bodies and hinges out of the world they are in and adds them, in the order
+  /// they were built, to `world` (contacts are made anew there); nothing if already there.
+  void moveToWorld(btDiscreteDynamicsWorld* world);
+  btDiscreteDynamicsWorld* world() const { return world_; }
+  /// The bodies that collide (and that rays see), in build order.
+  std::vector<const btRigidBody*> collidingBodies() const;
+  /// The box around every colliding body's shape, and the largest speed (m/s) any point of
+  /// a colliding body can have; false if none collides.
+  bool bounds(btVector3* aabb_min, btVector3* aabb_max, double* speed_mps) const;
+
  private:
   struct Body {
     std::unique_ptr<btCollisionShape> shape;
@@ -76,6 +86,7 @@ class PhysicsRobot {
     Eigen::Isometry3d T_com_root;  ///< inverse of the plan's T_root_com
   };
   void buildBody(const BodyPlan& plan, int robot_id);
+  void addBody(btRigidBody* body, bool collides);
   bool ownsBody(const btCollisionObject* object) const;
   /// Puts every body where the zero-joint configuration at T_world_model puts it.
   void placeBodies(const Eigen::Isometry3d& T_world_model);

@@ -34,7 +34,19 @@ bool combineFriction(btManifoldPoint& cp, const btCollisionObjectWrapper* a, int
   return true;
 }
 
+/// Contacts a robot's home world keeps ready: a Burger on the round track has about ten.
+constexpr int kWorldPoolSize = 256;
+
+btDefaultCollisionConstructionInfo poolOf(int pool_size) {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = pool_size;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = pool_size;
+  return info;
+}
+
 }  // namespace
+
+CollisionBackend::CollisionBackend(int pool_size) : config(poolOf(pool_size)) {}
 
 bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a,
                                                             btBroadphaseProxy* b) const {
@@ -47,32 +59,44 @@ bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a
   return oa->getUserIndex() < 0 || oa->getUserIndex() != ob->getUserIndex();
 }
 
-PhysicsWorld::PhysicsWorld(const WorldSpec& spec)
-    : config_(std::make_unique<btDefaultCollisionConfiguration>()),
-      dispatcher_(std::make_unique<btCollisionDispatcher>(config_.get())),
-      broadphase_(std::make_unique<btDbvtBroadphase>()),
-      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
-      world_(std::make_unique<btDiscreteDynamicsWorld>(dispatcher_.get(), broadphase_.get(),
-                                                        solver_.get(), config_.get())) {
-  gContactAddedCallback = combineFriction;
-  world_->getPairCache()->setOverlapFilterCallback(&filter_);
-  world_->setGravity(toBt(spec.gravity));
-  world_->setForceUpdateAllAabbs(false);
+StaticShapes::StaticShapes(const WorldSpec& spec) {
   for (const StaticShape& s : spec.shapes) {
     if (!s.collides) continue;
     shapes_.push_back(makeCollisionShape(s, s.mesh.get(), Motion::Static));
+    placed_.push_back({shapes_.back().get(), toBt(toIsometry(s.pose)), s.friction});
+  }
+}
+
+std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticShapes& statics,
+                                                                 btCollisionWorld* world) {
+  std::vector<std::unique_ptr<btCollisionObject>> objects;
+  for (const StaticShapes::Placed& s : statics.placed()) {
     auto obj = std::make_unique<btCollisionObject>();
-    obj->setCollisionShape(shapes_.back().get());
-    obj->setWorldTransform(toBt(toIsometry(s.pose)));
+    obj->setCollisionShape(s.shape);
+    obj->setWorldTransform(s.pose);
     obj->setFriction(s.friction);
     obj->setUserIndex(-1);
     // Bullet recomputes the bounding box of every "active" object each step;
     // static shapes never move.
     obj->setActivationState(ISLAND_SLEEPING);
-    world_->addCollisionObject(obj.get(), btBroadphaseProxy::StaticFilter,
-                               btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
-    objects_.push_back(std::move(obj));
+    world->addCollisionObject(obj.get(), btBroadphaseProxy::StaticFilter,
+                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    objects.push_back(std::move(obj));
   }
+  return objects;
+}
+
+PhysicsWorld::PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity)
+    : backend_(std::make_unique<CollisionBackend>(kWorldPoolSize)),
+      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      world_(std::make_unique<btDiscreteDynamicsWorld>(&backend_->dispatcher,
+                                                        &backend_->broadphase, solver_.get(),
+                                                        &backend_->config)) {
+  gContactAddedCallback = combineFriction;
+  world_->getPairCache()->setOverlapFilterCallback(&filter_);
+  world_->setGravity(toBt(gravity));
+  world_->setForceUpdateAllAabbs(false);
+  objects_ = addStaticObjects(statics, world_.get());
 }
 
 PhysicsWorld::~PhysicsWorld() {

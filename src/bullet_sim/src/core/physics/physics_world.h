@@ -5,17 +5,51 @@
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
+#include <Eigen/Core>
 
 #include "bullet_sim/description/world_spec.h"
 
 namespace bullet_sim {
 
-/// The Bullet dynamics world with the static shapes of a WorldSpec. Parts of
-/// one robot never collide with each other (Gazebo's self_collide false);
-/// friction of a contact is the smaller of the two surfaces' (as ODE does).
+/// The collision shapes of a WorldSpec's static shapes, made once and shared by every world
+/// that holds them (a shape is only read while a world steps or a ray is cast).
+class StaticShapes {
+ public:
+  struct Placed {
+    btCollisionShape* shape;
+    btTransform pose;
+    double friction;
+  };
+  explicit StaticShapes(const WorldSpec& spec);
+  const std::vector<Placed>& placed() const { return placed_; }
+
+ private:
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<Placed> placed_;
+};
+
+/// What a Bullet collision world works with besides its objects: configuration, dispatcher
+/// and broadphase (the world keeps pointers to them, so they do not move). The configuration
+/// keeps `pool_size` contact manifolds and collision algorithms ready (Bullet's default,
+/// 4096 of each, is 4.5 MB, and there is a world per robot); more come from the heap.
+struct CollisionBackend {
+  explicit CollisionBackend(int pool_size);
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+};
+
+/// Adds a static collision object for every shape of `statics` to `world`, as a world's
+/// walls and ground: they never move and do not collide with each other.
+std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticShapes& statics,
+                                                                 btCollisionWorld* world);
+
+/// A Bullet dynamics world with the static shapes of a world. Parts of one robot never
+/// collide with each other (Gazebo's self_collide false); friction of a contact is the
+/// smaller of the two surfaces' (as ODE does).
 class PhysicsWorld {
  public:
-  explicit PhysicsWorld(const WorldSpec& spec);
+  PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity);
   ~PhysicsWorld();
   PhysicsWorld(const PhysicsWorld&) = delete;
   PhysicsWorld& operator=(const PhysicsWorld&) = delete;
@@ -29,12 +63,9 @@ class PhysicsWorld {
     bool needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const override;
   };
   RobotPairFilter filter_;
-  std::unique_ptr<btDefaultCollisionConfiguration> config_;
-  std::unique_ptr<btCollisionDispatcher> dispatcher_;
-  std::unique_ptr<btDbvtBroadphase> broadphase_;
+  std::unique_ptr<CollisionBackend> backend_;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
   std::unique_ptr<btDiscreteDynamicsWorld> world_;
-  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
   std::vector<std::unique_ptr<btCollisionObject>> objects_;
 };
 

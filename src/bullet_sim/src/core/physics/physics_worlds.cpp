@@ -1,0 +1,78 @@
+#include "physics/physics_worlds.h"
+
+#include "physics/bullet_convert.h"
+
+namespace bullet_sim {
+
+PhysicsWorlds::PhysicsWorlds(const WorldSpec& spec, unsigned threads)
+    : statics_(spec), gravity_(spec.gravity), rays_(statics_), pool_(threads) {}
+
+PhysicsWorlds::~PhysicsWorlds() = default;
+
+btDiscreteDynamicsWorld* PhysicsWorlds::addHome(int id) {
+  Home& home = homes_[id];
+  home.world = std::make_unique<PhysicsWorld>(statics_, gravity_);
+  home.robot = nullptr;
+  return home.world->dynamics();
+}
+
+void PhysicsWorlds::attach(int id, PhysicsRobot* robot) {
+  Home& home = homes_.at(id);
+  home.robot = robot;
+  home.group = id;
+  rays_.addRobot(id, *robot);
+}
+
+void PhysicsWorlds::detach(int id) {
+  for (auto& entry : homes_) {
+    Home& guest = entry.second;
+    if (entry.first != id && guest.robot && guest.group == id) {
+      guest.robot->moveToWorld(guest.world->dynamics());
+      guest.group = entry.first;
+    }
+  }
+  homes_.at(id).robot = nullptr;
+  rays_.removeRobot(id);
+}
+
+void PhysicsWorlds::dropHome(int id) { homes_.erase(id); }
+
+void PhysicsWorlds::regroup(double dt_s) {
+  members_.clear();
+  for (const auto& entry : homes_) {
+    if (!entry.second.robot) continue;
+    GroupMember m;
+    m.id = entry.first;
+    m.collides = entry.second.robot->bounds(&m.aabb_min, &m.aabb_max, &m.speed_mps);
+    m.group = entry.second.group;
+    members_.push_back(m);
+  }
+  const std::vector<int> groups = contactGroups(members_, dt_s);
+  busy_.clear();
+  for (size_t i = 0; i < members_.size(); ++i) {
+    Home& home = homes_.at(members_[i].id);
+    PhysicsWorld& world = *homes_.at(groups[i]).world;
+    home.robot->moveToWorld(world.dynamics());
+    home.group = groups[i];
+    if (groups[i] == members_[i].id) busy_.push_back(&world);
+  }
+}
+
+void PhysicsWorlds::step(double dt_s) {
+  regroup(dt_s);
+  pool_.run(busy_.size(), [this, dt_s](size_t i) { busy_[i]->step(dt_s); });
+}
+
+btCollisionWorld& PhysicsWorlds::rayWorld() {
+  // Teleports and joint settings move bodies between steps too; a sync is a few
+  // bounding boxes per robot.
+  rays_.sync();
+  return rays_.world();
+}
+
+void PhysicsWorlds::setGravity(const Eigen::Vector3d& gravity) {
+  gravity_ = gravity;
+  for (auto& entry : homes_) entry.second.world->dynamics()->setGravity(toBt(gravity));
+}
+
+}  // namespace bullet_sim

@@ -1,0 +1,68 @@
+#ifndef BULLET_SIM_CORE_PHYSICS_WORLDS_H
+#define BULLET_SIM_CORE_PHYSICS_WORLDS_H
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "bullet_sim/description/world_spec.h"
+#include "physics/contact_groups.h"
+#include "physics/physics_robot.h"
+#include "physics/physics_world.h"
+#include "physics/ray_scene.h"
+#include "physics/step_pool.h"
+
+namespace bullet_sim {
+
+/// The robots' physics, in as many Bullet worlds as there are robots: each robot has a
+/// home world (with the world's static shapes), and robots that may touch in the coming
+/// step (contact_groups.h) are simulated together in the home world of the one with the
+/// smallest id; apart again, each goes back to its own. Robots in different worlds cannot
+/// touch within a step, so the worlds step on the threads of a StepPool, and the result is
+/// the same to the bit whatever the number of threads. Rays are cast in a RayScene that
+/// holds every robot.
+class PhysicsWorlds {
+ public:
+  /// `threads` >= 1.
+  PhysicsWorlds(const WorldSpec& spec, unsigned threads);
+  ~PhysicsWorlds();
+  PhysicsWorlds(const PhysicsWorlds&) = delete;
+  PhysicsWorlds& operator=(const PhysicsWorlds&) = delete;
+
+  /// A new home world for robot `id`, to build the robot in; then attach() it.
+  btDiscreteDynamicsWorld* addHome(int id);
+  void attach(int id, PhysicsRobot* robot);
+  /// Before robot `id` is destroyed: the robots simulated in its home go back to their
+  /// own, and rays no longer see it. Its home goes with dropHome() once it is destroyed.
+  void detach(int id);
+  void dropHome(int id);
+
+  /// Groups the robots for the step and steps every world that holds one.
+  void step(double dt_s);
+  /// The scene for rays, every robot where it is now.
+  btCollisionWorld& rayWorld();
+  void setGravity(const Eigen::Vector3d& gravity);
+  unsigned threads() const { return pool_.threads(); }
+
+ private:
+  struct Home {
+    std::unique_ptr<PhysicsWorld> world;
+    PhysicsRobot* robot = nullptr;  ///< null until attached, and after detach
+    int group = 0;                  ///< the home (robot id) it is simulated in now
+  };
+  void regroup(double dt_s);
+
+  StaticShapes statics_;
+  Eigen::Vector3d gravity_;
+  std::map<int, Home> homes_;  ///< by robot id: the order of every pass over the robots
+  RayScene rays_;
+  StepPool pool_;
+  std::vector<GroupMember> members_;  ///< the attached robots of the last regroup, by id
+  std::vector<PhysicsWorld*> busy_;   ///< the worlds stepped in the last step, by host id
+};
+
+}  // namespace bullet_sim
+
+#endif  // BULLET_SIM_CORE_PHYSICS_WORLDS_H

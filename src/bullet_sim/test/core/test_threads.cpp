@@ -1,0 +1,191 @@
+// Robots in parallel: the same run to the bit whatever the number of threads, and robots
+// simulated in worlds of their own still push each other and see each other.
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bullet_sim/simulation.h"
+#include "burger.h"
+
+using namespace bullet_sim;
+
+namespace {
+
+/// Everything a run produced, as the bits of each number, with what each entry was.
+struct Trace {
+  std::vector<uint64_t> bits;
+  std::vector<std::string> what;
+  void add(double value, const std::string& label) {
+    uint64_t b;
+    std::memcpy(&b, &value, sizeof b);
+    bits.push_back(b);
+    what.push_back(label);
+  }
+};
+
+Pose3 poseAt(double x, double y, double yaw) {
+  Pose3 p;
+  p.position = Eigen::Vector3d(x, y, 0);
+  p.orientation = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
+  return p;
+}
+
+/// 16 Burgers in the round track's west lane, 4 rows of 4; rows 0 and 1 drive at each
+/// other, as do rows 2 and 3 (they meet within a second), each robot turning a little
+/// differently, so that they push, slide off each other and hit the lane's walls.
+void spawnSixteen(Simulation* sim) {
+  const double xs[4] = {-0.55, -0.25, 0.05, 0.35};
+  const double ys[4] = {-1.4, -0.95, 0.3, 0.75};
+  for (int row = 0; row < 4; ++row) {
+    for (int col = 0; col < 4; ++col) {
+      const std::string name = "tb3_" + std::to_string(4 * row + col);
+      const double yaw = row % 2 == 0 ? M_PI / 2 : -M_PI / 2;
+      sim->spawnRobot(name, bullet_sim_test::burgerSpec(), poseAt(xs[col], ys[row], yaw));
+      sim->setCmdVel(name, 0.2, 0.3 * (col - 1.5) * (row % 2 == 0 ? 1 : -1));
+    }
+  }
+}
+
+void addPose(const Simulation& sim, const std::string& robot, Trace* trace) {
+  const Pose3 p = sim.modelPose(robot);
+  const std::string at = robot + " pose at " + std::to_string(sim.timeS()) + " s";
+  for (int i = 0; i < 3; ++i) trace->add(p.position[i], at);
+  for (double q : {p.orientation.w(), p.orientation.x(), p.orientation.y(), p.orientation.z()}) {
+    trace->add(q, at);
+  }
+}
+
+void addReading(Simulation* sim, const DueSensor& due, Trace* trace) {
+  const std::string at = due.robot + " sensor at " + std::to_string(sim->timeS()) + " s";
+  switch (due.kind) {
+    case SensorKind::Ray:
+      for (float r : sim->readRay(due.robot, due.index).ranges) trace->add(r, at + " (scan)");
+      break;
+    case SensorKind::Imu: {
+      const ImuData imu = sim->readImu(due.robot, due.index);
+      for (int i = 0; i < 3; ++i) trace->add(imu.linear_acceleration[i], at + " (imu)");
+      for (int i = 0; i < 3; ++i) trace->add(imu.angular_velocity[i], at + " (imu)");
+      break;
+    }
+    case SensorKind::Odometry:
+      trace->add(sim->readOdometry(due.robot).twist_in_child.linear.x(), at + " (odometry)");
+      break;
+    case SensorKind::JointStates:
+      for (double q : sim->readJointStates(due.robot).positions) trace->add(q, at + " (joints)");
+      break;
+    case SensorKind::Camera:
+      break;
+  }
+}
+
+/// Every pose after every step and every due reading of `seconds` of the sixteen.
+Trace runSixteen(unsigned threads, double seconds) {
+  SimConfig cfg;
+  cfg.threads = threads;
+  Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
+  EXPECT_EQ(sim.threads(), threads);
+  spawnSixteen(&sim);
+  Trace trace;
+  while (sim.timeS() < seconds) {
+    for (const DueSensor& due : sim.step()) addReading(&sim, due, &trace);
+    for (const std::string& robot : sim.robotNames()) addPose(sim, robot, &trace);
+  }
+  return trace;
+}
+
+void expectSameBits(const Trace& a, const Trace& b) {
+  ASSERT_EQ(a.bits.size(), b.bits.size());
+  for (size_t i = 0; i < a.bits.size(); ++i) {
+    ASSERT_EQ(a.bits[i], b.bits[i]) << "first difference: entry " << i << ", " << a.what[i];
+  }
+}
+
+}  // namespace
+
+TEST(Threads, SixteenBurgersGiveTheSameRunToTheBitOnOneTwoAndThreeThreads) {
+  const Trace one = runSixteen(1, 2.5);
+  const Trace two = runSixteen(2, 2.5);
+  const Trace three = runSixteen(3, 2.5);
+  expectSameBits(one, two);
+  expectSameBits(one, three);
+}
+
+TEST(Threads, SixteenBurgersMeetEachOther) {
+  // The run above is only a test of the grouping if the robots touch: the rows that drive
+  // at each other are stopped short of where they would be alone.
+  SimConfig cfg;
+  cfg.threads = 2;
+  Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
+  spawnSixteen(&sim);
+  while (sim.timeS() < 2.5) sim.step();
+  int held_back = 0;
+  for (int row = 0; row < 2; ++row) {
+    for (int col = 0; col < 4; ++col) {
+      const double y = sim.modelPose("tb3_" + std::to_string(4 * row + col)).position.y();
+      // Alone, 2.5 s at 0.2 m/s moves a robot about 0.45 m along y (less its turn); the
+      // rows start 0.45 m apart, so neither row could pass the other's start.
+      const double start = row == 0 ? -1.4 : -0.95;
+      if (std::fabs(y - start) < 0.3) ++held_back;
+    }
+  }
+  EXPECT_GE(held_back, 4);
+}
+
+TEST(Threads, ABurgerPushesAnotherSimulatedInAWorldOfItsOwn) {
+  for (unsigned threads : {1u, 2u}) {
+    SimConfig cfg;
+    cfg.threads = threads;
+    Simulation sim(bullet_sim_test::flatWorld(), cfg);
+    sim.spawnRobot("pusher", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+    sim.spawnRobot("pushed", bullet_sim_test::burgerSpec(), poseAt(1.0, 0, 0));
+    sim.setCmdVel("pusher", 0.2, 0);
+    while (sim.timeS() < 6.0) sim.step();
+    // Alone the pusher would drive 1.2 m in 6 s, through the other. The pusher's front is
+    // 0.038 m ahead of its base_footprint (base box 0.14 m centred 0.032 m behind it), the
+    // other's back 0.102 m behind its own: they stay at least 0.14 m apart.
+    const double pusher = sim.modelPose("pusher").position.x();
+    const double pushed = sim.modelPose("pushed").position.x();
+    EXPECT_GT(pushed - pusher, 0.14 - 0.005) << threads << " threads";
+    EXPECT_GT(pusher, 0.8) << threads << " threads";
+  }
+}
+
+TEST(Threads, LidarSeesARobotSimulatedInAnotherWorld) {
+  SimConfig cfg;
+  cfg.threads = 2;
+  Simulation sim(bullet_sim_test::flatWorld(), cfg);
+  sim.spawnRobot("looker", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+  sim.spawnRobot("seen", bullet_sim_test::burgerSpec(), poseAt(0, 1.0, 0));
+  while (sim.timeS() < 0.2) sim.step();
+  // Ray 90 (+y) from the looker's scanner at x -0.032 meets, at the scan plane, the other's
+  // lidar housing: a cylinder of radius 0.055 m whose axis is 0.017 m behind that robot's
+  // base_footprint (scan_joint x -0.032, collision origin x +0.015).
+  const double dx = -0.017 - -0.032;
+  const LaserScanData scan = sim.readRay("looker", 0);
+  EXPECT_NEAR(scan.ranges[90], 1.0 - std::sqrt(0.055 * 0.055 - dx * dx), 0.03);
+}
+
+TEST(Threads, RobotsInOneWorldCanBeDeletedAndResetInAnyOrder) {
+  for (const char* first : {"pusher", "pushed"}) {
+    SimConfig cfg;
+    cfg.threads = 2;
+    Simulation sim(bullet_sim_test::flatWorld(), cfg);
+    sim.spawnRobot("pusher", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+    sim.spawnRobot("pushed", bullet_sim_test::burgerSpec(), poseAt(0.3, 0, 0));
+    sim.spawnRobot("third", bullet_sim_test::burgerSpec(), poseAt(0.6, 0, 0));
+    sim.setCmdVel("pusher", 0.2, 0);
+    while (sim.timeS() < 1.5) sim.step();  // the three touch: one world
+    ASSERT_TRUE(sim.deleteRobot(first));
+    while (sim.timeS() < 2.0) sim.step();
+    sim.reset();
+    while (sim.timeS() < 0.5) sim.step();
+    for (const std::string& robot : sim.robotNames()) {
+      EXPECT_LT(std::fabs(sim.modelPose(robot).position.z()), 0.01) << robot << ", " << first;
+    }
+    EXPECT_EQ(sim.robotNames().size(), 2u);
+  }
+}
