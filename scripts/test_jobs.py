@@ -9,7 +9,7 @@ import os
 import shlex
 import subprocess
 import xml.etree.ElementTree as ET
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 # Jobs that must not run at the same time as another job of the same group, and why.
 # Every other pair of jobs runs side by side: each rostest starts its own master on a free
@@ -35,7 +35,6 @@ class Job:
     result_files: list  # the one catkin checks first, then those of a rostest's <test>s
     limit_s: float = DEFAULT_LIMIT_S
     group: str = None
-    env: dict = field(default_factory=dict)
 
 
 class JobListError(RuntimeError):

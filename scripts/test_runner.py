@@ -94,6 +94,8 @@ class Runner:
         self.log_lock = threading.Lock()
         self.durations = {}
         self.errors = []
+        self.started = {}  # job name -> its process, while it runs
+        self.displays = []
 
     def run(self):
         open(self.log_path, 'w').close()
@@ -109,6 +111,7 @@ class Runner:
 
     def worker(self, index):
         display = self.display()
+        self.displays.append(display)
         try:
             env = self.worker_env(index, display.start())
             while True:
@@ -148,9 +151,10 @@ class Runner:
         log = os.path.join(log_dir, job.name + '.log')
         start = time.monotonic()
         with open(log, 'w') as out:
-            process = subprocess.Popen(job.command, cwd=job.cwd, env=dict(env, **job.env),
+            process = subprocess.Popen(job.command, cwd=job.cwd, env=env,
                                        stdout=out, stderr=subprocess.STDOUT,
                                        stdin=subprocess.DEVNULL, start_new_session=True)
+            self.started[job.name] = process
             try:
                 status = process.wait(timeout=job.limit_s)
                 note = ''
@@ -159,6 +163,7 @@ class Runner:
                 note = f'killed after {job.limit_s:.0f} s (its time limit)'
             kill_group(process)
             process.wait()
+            del self.started[job.name]
         seconds = time.monotonic() - start
         self.durations[job.name] = seconds
         if note:
@@ -167,6 +172,18 @@ class Runner:
             write_failure(job.result_files[0], job.name, f'exited {status} without a result file')
         self.append_log(job, log, status, seconds)
         self.progress.job_done(job.name, seconds, job.result_files, note)
+
+    def abort(self, signum, _frame):
+        """On SIGTERM or SIGINT: ends every running job (each in a session of its own, out of
+        the reach of a terminal's Ctrl-C) and every X server, then the run."""
+        for process in list(self.started.values()):
+            try:
+                os.killpg(process.pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        for display in self.displays:
+            display.stop()
+        raise SystemExit(128 + signum)
 
     def append_log(self, job, log, status, seconds):
         with self.log_lock, open(self.log_path, 'a') as out, open(log, errors='replace') as part:
@@ -197,6 +214,8 @@ def main():
     progress = Progress(results_dir, sys.stdout)
     progress.write(f'{len(jobs)} test jobs on {args.jobs} workers')
     runner = Runner(jobs, args.jobs, build_dir, progress, args.log)
+    signal.signal(signal.SIGTERM, runner.abort)
+    signal.signal(signal.SIGINT, runner.abort)
     ok = runner.run()
     progress.unclaimed(result_files(results_dir))
     sys.stdout.write(progress.slowest())

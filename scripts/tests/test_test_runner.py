@@ -2,6 +2,7 @@
 entries and jobs that are small shell commands; no ROS, no X server."""
 import io
 import os
+import subprocess
 import sys
 import tempfile
 import threading
@@ -208,3 +209,23 @@ def test_a_line_per_file_of_an_ended_job_a_missing_one_named_and_the_slowest_at_
     assert progress.slowest(2).splitlines() == ['slowest 2 test jobs (seconds each took):',
                                                 '      70 s  p_rostest_t',
                                                 '       3 s  p_gtest_g']
+
+
+def test_a_stopped_run_ends_its_running_jobs_and_x_servers():
+    folder = tempfile.mkdtemp()
+    stopped = []
+
+    class Display(FakeDisplay):
+        def stop(self):
+            stopped.append(True)
+
+    runner = test_runner.Runner([], 1, folder, Progress(folder, io.StringIO()), '/dev/null',
+                                display=Display)
+    runner.displays.append(Display())
+    job = subprocess.Popen(['/bin/sh', '-c', 'sleep 300 & wait'], start_new_session=True)
+    runner.started['hangs'] = job
+    with pytest.raises(SystemExit) as stop:
+        runner.abort(15, None)
+    assert stop.value.code == 128 + 15
+    assert job.wait(timeout=10) != 0
+    assert stopped == [True]
