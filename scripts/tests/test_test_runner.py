@@ -147,6 +147,9 @@ def test_a_job_over_its_limit_is_killed_with_its_children_and_counts_as_failed()
     assert count_file(result) == {'passed': 0, 'failed': 1, 'skipped': 0}
     with open(pid_file) as f:
         child = int(f.read())
+    gone_by = time.monotonic() + 5  # a killed process takes a moment to exit
+    while running(child) and time.monotonic() < gone_by:
+        time.sleep(0.01)
     assert not running(child)
 
 

@@ -1,0 +1,40 @@
+"""The lines `make build` prints while it runs (build_progress.py), fed with made-up
+output and a hand-driven clock."""
+import io
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import build_progress  # noqa: E402
+
+
+class Clock:
+    def __init__(self):
+        self.now = 0.0
+
+    def __call__(self):
+        return self.now
+
+
+def test_a_line_when_a_package_starts_and_its_span_at_the_end():
+    clock, out = Clock(), io.StringIO()
+    progress = build_progress.Progress(out, clock)
+    clock.now = 5
+    progress.line('[  3%] Building CXX object src/sim_render/CMakeFiles/sim_render.dir/src/a.cpp.o\n')
+    clock.now = 65
+    progress.line('[ 40%] Building CXX object src/bullet_sim/CMakeFiles/core.dir/src/b.cpp.o\n')
+    clock.now = 70
+    progress.line('[ 41%] Linking CXX shared library /ws/devel/lib/libsim_render.so src/sim_render/x\n')
+    progress.line('/ws/src/bullet_sim/src/b.cpp:3:1: warning: unused variable\n')
+    clock.now = 80
+    progress.line('[ 42%] Built target sim_render\n')  # the end of sim_render's span
+    progress.line('[ 43%] Built target some_other_target\n')  # not one of ours: nothing
+    clock.now = 200
+    progress.line('[ 99%] Linking CXX executable /ws/devel/lib/bullet_sim/node src/bullet_sim/y\n')
+    lines = out.getvalue().splitlines()
+    assert lines == ['[ 0:05] building sim_render', '[ 1:05] building bullet_sim',
+                     '/ws/src/bullet_sim/src/b.cpp:3:1: warning: unused variable']
+    summary = progress.summary().splitlines()
+    assert summary[0] == '[ 3:20] build done; compile and link time per package:'
+    assert summary[1].split()[:3] == ['sim_render', '75.0', 's']
+    assert summary[2].split()[:3] == ['bullet_sim', '135.0', 's']
