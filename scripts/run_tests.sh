@@ -22,9 +22,9 @@ set +u
 source devel/setup.bash
 set -u
 echo "building the test programs (full output in build/test_build.log)"
-if ! catkin_make --source . --build build -DCMAKE_BUILD_TYPE=Release \
-    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" \
-    tests -j"${JOBS:-2}" > build/test_build.log 2>&1; then
+if ! /usr/bin/python3 -u scripts/test_build.py --log build/test_build.log -- \
+    catkin_make --source . --build build -DCMAKE_BUILD_TYPE=Release \
+    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" tests -j"${JOBS:-2}"; then
   echo "building the test programs failed; last lines of build/test_build.log:"
   tail -n 40 build/test_build.log
   exit 1
@@ -32,7 +32,7 @@ fi
 echo "running the tests (a line per result file; full output in build/test.log)"
 # Every job carries its own time limit; this bound only guards the whole run.
 timeout --kill-after=30 4800 /usr/bin/python3 -u scripts/test_runner.py build \
-  --jobs "${TEST_JOBS:-2}" --repo . --log build/test.log
+  --jobs "${TEST_JOBS:-2}" --only "${TEST_ONLY:-}" --repo . --log build/test.log
 run_status=$?
 (( run_status == 0 )) || echo "the test runner exited $run_status (see build/test.log)"
 /usr/bin/python3 scripts/test_summary.py build/test_results

@@ -94,10 +94,12 @@ class Runner:
         self.log_lock = threading.Lock()
         self.durations = {}
         self.errors = []
+        self.log_dir = os.path.join(build_dir, 'test_output')
         self.started = {}  # job name -> its process, while it runs
         self.displays = []
 
     def run(self):
+        os.makedirs(self.log_dir, exist_ok=True)
         open(self.log_path, 'w').close()
         threads = [threading.Thread(target=self.worker, args=(i,), daemon=True)
                    for i in range(self.workers)]
@@ -110,7 +112,7 @@ class Runner:
         return not self.errors
 
     def worker(self, index):
-        display = self.display()
+        display = self.display(os.path.join(self.log_dir, f'xvfb-worker{index}.log'))
         self.displays.append(display)
         try:
             env = self.worker_env(index, display.start())
@@ -146,9 +148,7 @@ class Runner:
                     ROS_LOG_DIR=os.path.join(ros_home, 'log'))
 
     def run_job(self, job, env):
-        log_dir = os.path.join(self.build_dir, 'test_output')
-        os.makedirs(log_dir, exist_ok=True)
-        log = os.path.join(log_dir, job.name + '.log')
+        log = os.path.join(self.log_dir, job.name + '.log')
         start = time.monotonic()
         with open(log, 'w') as out:
             process = subprocess.Popen(job.command, cwd=job.cwd, env=env,
@@ -170,7 +170,7 @@ class Runner:
             write_failure(job.result_files[0], job.name, note)
         elif not os.path.exists(job.result_files[0]):
             write_failure(job.result_files[0], job.name, f'exited {status} without a result file')
-        self.append_log(job, log, status, seconds)
+        self.append_log(job, log, f'exit {status}, {seconds:.0f} s on {env["DISPLAY"]}')
         self.progress.job_done(job.name, seconds, job.result_files, note)
 
     def abort(self, signum, _frame):
@@ -185,9 +185,9 @@ class Runner:
             display.stop()
         raise SystemExit(128 + signum)
 
-    def append_log(self, job, log, status, seconds):
+    def append_log(self, job, log, how):
         with self.log_lock, open(self.log_path, 'a') as out, open(log, errors='replace') as part:
-            out.write(f'==== {job.name}: exit {status}, {seconds:.0f} s ====\n')
+            out.write(f'==== {job.name}: {how} ====\n')
             out.write(part.read())
 
 
@@ -204,13 +204,16 @@ def main():
     parser.add_argument('--jobs', type=int, default=2, help='workers (default 2)')
     parser.add_argument('--log', required=True, help='the whole run\'s output')
     parser.add_argument('--repo', required=True, help='the source root (for the pytest job)')
+    parser.add_argument('--only', default='', help='run only the jobs whose name has this')
     args = parser.parse_args()
     build_dir = os.path.abspath(args.build_dir)
     results_dir = os.path.join(build_dir, 'test_results')
     durations_path = os.path.join(build_dir, 'test_durations.json')
     jobs = [test_jobs.job_from_ctest(entry) for entry in test_jobs.ctest_entries(build_dir)]
     jobs.append(test_jobs.pytest_job(os.path.abspath(args.repo), results_dir))
-    jobs = test_jobs.longest_first(jobs, test_jobs.load_durations(durations_path))
+    jobs = [job for job in jobs if args.only in job.name]
+    durations = test_jobs.load_durations(durations_path)
+    jobs = test_jobs.longest_first(jobs, durations)
     progress = Progress(results_dir, sys.stdout)
     progress.write(f'{len(jobs)} test jobs on {args.jobs} workers')
     runner = Runner(jobs, args.jobs, build_dir, progress, args.log)
@@ -219,7 +222,7 @@ def main():
     ok = runner.run()
     progress.unclaimed(result_files(results_dir))
     sys.stdout.write(progress.slowest())
-    test_jobs.save_durations(durations_path, runner.durations)
+    test_jobs.save_durations(durations_path, dict(durations, **runner.durations))
     for error in runner.errors:
         print('test runner:', error)
     return 0 if ok else 1

@@ -14,18 +14,20 @@ class DisplayError(RuntimeError):
 
 
 class Display:
-    def __init__(self):
+    def __init__(self, log_path=os.devnull):
         self.process = None
         self.name = None
+        self.log_path = log_path
 
     def start(self):
         """Starts Xvfb and returns its display name (':N') once it accepts clients."""
         read_fd, write_fd = os.pipe()
         try:
-            self.process = subprocess.Popen(
-                ['Xvfb', '-displayfd', str(write_fd), '-screen', '0', SCREEN, '-nolisten', 'tcp'],
-                pass_fds=(write_fd,), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                start_new_session=True)
+            with open(self.log_path, 'w') as log:
+                self.process = subprocess.Popen(
+                    ['Xvfb', '-displayfd', str(write_fd), '-screen', '0', SCREEN, '-nolisten',
+                     'tcp'], pass_fds=(write_fd,), stdout=log, stderr=subprocess.STDOUT,
+                    start_new_session=True)
         finally:
             os.close(write_fd)
         with os.fdopen(read_fd) as pipe:

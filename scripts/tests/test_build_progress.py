@@ -1,11 +1,14 @@
-"""The lines `make build` prints while it runs (build_progress.py), fed with made-up
-output and a hand-driven clock."""
+"""The lines `make build` and the test programs' build print while they run
+(build_progress.py, test_build.py), fed with made-up output and a hand-driven clock."""
 import io
 import os
+import subprocess
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import build_progress  # noqa: E402
+import test_build  # noqa: E402
 
 
 class Clock:
@@ -38,3 +41,34 @@ def test_a_line_when_a_package_starts_and_its_span_at_the_end():
     assert summary[0] == '[ 3:20] build done; compile and link time per package:'
     assert summary[1].split()[:3] == ['sim_render', '75.0', 's']
     assert summary[2].split()[:3] == ['bullet_sim', '135.0', 's']
+
+
+def test_the_test_build_names_makes_last_step_after_thirty_quiet_seconds():
+    clock, out = Clock(), io.StringIO()
+    watched = test_build.Watched(out, clock)
+    clock.now = 20
+    watched.line('[ 10%] Building CXX object src/sim_render/CMakeFiles/test_scene.dir/test/a.cpp.o\n')
+    clock.now = 45
+    watched.still_building()  # 25 s after 'building sim_render': quiet
+    watched.line('[ 55%] Linking CXX executable /ws/devel/lib/sim_render/test_scene\n')
+    clock.now = 51
+    watched.still_building()
+    watched.still_building()  # just said: nothing more
+    assert out.getvalue().splitlines() == [
+        '[ 0:20] building sim_render',
+        '[ 0:51] building the test programs: [ 55%] Linking CXX executable '
+        '/ws/devel/lib/sim_render/test_scene']
+
+
+def test_the_test_build_keeps_the_whole_output_and_its_status():
+    folder = tempfile.mkdtemp()
+    log = os.path.join(folder, 'build.log')
+    script = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                          'test_build.py')
+    proc = subprocess.run([sys.executable, script, '--log', log, '--', '/bin/sh', '-c',
+                           'echo "a.cpp:1:1: error: boom"; echo quiet line; exit 2'],
+                          capture_output=True, text=True)
+    assert proc.returncode == 2
+    assert proc.stdout == 'a.cpp:1:1: error: boom\n'
+    with open(log) as f:
+        assert f.read() == 'a.cpp:1:1: error: boom\nquiet line\n'

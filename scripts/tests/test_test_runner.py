@@ -97,6 +97,9 @@ def test_a_job_waits_while_one_of_its_group_runs_and_others_go_ahead():
 
 
 class FakeDisplay:
+    def __init__(self, log_path=None):
+        pass
+
     def start(self):
         return ':none'
 
@@ -128,7 +131,7 @@ def test_passing_jobs_report_their_files_and_their_output_lands_in_the_log():
     assert 'ok   p/b.xml: 2 passed, 0 failed, 0 skipped' in lines
     with open(os.path.join(folder, 'all.log')) as f:
         log = f.read()
-    assert log.count('hello from :none') == 2 and '==== a: exit 0' in log
+    assert log.count('hello from :none') == 2 and '==== a: exit 0, 0 s on :none ====' in log
     assert set(runner.durations) == {'a', 'b'}
     assert os.path.isdir(os.path.join(folder, 'ros_home', 'worker1'))
 
