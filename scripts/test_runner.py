@@ -7,6 +7,7 @@ Prints a line per result file as its job ends (test_progress.py); each job's out
 to a log of its own and, as it ends, to one log of the whole run."""
 import argparse
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -204,14 +205,15 @@ def main():
     parser.add_argument('--jobs', type=int, default=2, help='workers (default 2)')
     parser.add_argument('--log', required=True, help='the whole run\'s output')
     parser.add_argument('--repo', required=True, help='the source root (for the pytest job)')
-    parser.add_argument('--only', default='', help='run only the jobs whose name has this')
+    parser.add_argument('--only', default='',
+                        help='run only the jobs whose name this regular expression finds')
     args = parser.parse_args()
     build_dir = os.path.abspath(args.build_dir)
     results_dir = os.path.join(build_dir, 'test_results')
     durations_path = os.path.join(build_dir, 'test_durations.json')
     jobs = [test_jobs.job_from_ctest(entry) for entry in test_jobs.ctest_entries(build_dir)]
     jobs.append(test_jobs.pytest_job(os.path.abspath(args.repo), results_dir))
-    jobs = [job for job in jobs if args.only in job.name]
+    jobs = [job for job in jobs if re.search(args.only, job.name)]
     durations = test_jobs.load_durations(durations_path)
     jobs = test_jobs.longest_first(jobs, durations)
     progress = Progress(results_dir, sys.stdout)
