@@ -2,7 +2,11 @@
 """A private Xvfb server: the X server picks a free display number itself (-displayfd), so
 that servers started at the same time never race for one. GUI tests find their windows by
 name with xdotool: two tests on one display could click each other's windows, so each test
-worker has its own."""
+worker has its own.
+
+-noreset: by default an X server resets when its last client disconnects, and a client that
+connects during the reset is refused ("could not connect to display"): a test that closes
+one window and opens the next, or polls with xdotool, would then fail at random."""
 import os
 import subprocess
 
@@ -26,8 +30,8 @@ class Display:
             with open(self.log_path, 'w') as log:
                 self.process = subprocess.Popen(
                     ['Xvfb', '-displayfd', str(write_fd), '-screen', '0', SCREEN, '-nolisten',
-                     'tcp'], pass_fds=(write_fd,), stdout=log, stderr=subprocess.STDOUT,
-                    start_new_session=True)
+                     'tcp', '-noreset'], pass_fds=(write_fd,), stdout=log,
+                    stderr=subprocess.STDOUT, start_new_session=True)
         finally:
             os.close(write_fd)
         with os.fdopen(read_fd) as pipe:

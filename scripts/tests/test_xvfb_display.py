@@ -33,3 +33,17 @@ def test_servers_started_together_get_displays_of_their_own():
     finally:
         for display in displays:
             display.stop()
+
+
+def test_the_server_does_not_reset_when_its_last_client_leaves():
+    # A reset would drop the root window's properties and refuse the next client meanwhile.
+    display = Display()
+    try:
+        env = dict(os.environ, DISPLAY=display.start())
+        subprocess.run(['xprop', '-root', '-f', 'MOBILITY_TEST', '8s', '-set', 'MOBILITY_TEST',
+                        'kept'], env=env, check=True, timeout=10)
+        read = subprocess.run(['xprop', '-root', 'MOBILITY_TEST'], env=env, capture_output=True,
+                              text=True, timeout=10)
+        assert read.stdout.strip() == 'MOBILITY_TEST(STRING) = "kept"', read.stderr
+    finally:
+        display.stop()
