@@ -10,7 +10,7 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from test_summary import count_file  # noqa: E402
 
-QUIET_S = 30.0  # longest time without a line
+QUIET_S = 25.0  # a line at least every 30 s, with time to spare for polling and load
 
 
 class Progress:

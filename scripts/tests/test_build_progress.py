@@ -43,20 +43,20 @@ def test_a_line_when_a_package_starts_and_its_span_at_the_end():
     assert summary[2].split()[:3] == ['bullet_sim', '135.0', 's']
 
 
-def test_the_test_build_names_makes_last_step_after_thirty_quiet_seconds():
+def test_the_test_build_names_makes_last_step_after_25_quiet_seconds():
     clock, out = Clock(), io.StringIO()
     watched = test_build.Watched(out, clock)
     clock.now = 20
     watched.line('[ 10%] Building CXX object src/sim_render/CMakeFiles/test_scene.dir/test/a.cpp.o\n')
-    clock.now = 45
-    watched.still_building()  # 25 s after 'building sim_render': quiet
+    clock.now = 44
+    watched.still_building()  # 24 s after 'building sim_render': quiet
     watched.line('[ 55%] Linking CXX executable /ws/devel/lib/sim_render/test_scene\n')
-    clock.now = 51
+    clock.now = 46
     watched.still_building()
     watched.still_building()  # just said: nothing more
     assert out.getvalue().splitlines() == [
         '[ 0:20] building sim_render',
-        '[ 0:51] building the test programs: [ 55%] Linking CXX executable '
+        '[ 0:46] building the test programs: [ 55%] Linking CXX executable '
         '/ws/devel/lib/sim_render/test_scene']
 
 

@@ -181,16 +181,16 @@ class Clock:
         return self.now
 
 
-def test_running_jobs_are_named_after_thirty_quiet_seconds():
+def test_running_jobs_are_named_after_25_quiet_seconds():
     clock, out = Clock(), io.StringIO()
     progress = Progress('/r', out, clock)
-    clock.now = 29
+    clock.now = 24
     progress.still_running({'slow_rostest': 0.0})
     assert out.getvalue() == ''
-    clock.now = 31
-    progress.still_running({'slow_rostest': 0.0, 'gtest': 25.0})
+    clock.now = 26
+    progress.still_running({'slow_rostest': 0.0, 'gtest': 20.0})
     progress.still_running({'slow_rostest': 0.0})
-    assert out.getvalue().splitlines() == ['[ 0:31] running: slow_rostest (31 s), gtest (6 s)']
+    assert out.getvalue().splitlines() == ['[ 0:26] running: slow_rostest (26 s), gtest (6 s)']
 
 
 def test_a_line_per_file_of_an_ended_job_a_missing_one_named_and_the_slowest_at_the_end():
