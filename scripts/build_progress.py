@@ -16,6 +16,7 @@ PACKAGE_WORK = re.compile(r'(Building \w+ object|Linking \w+ \w+ library|Linking
                           r'|Generating) .*?src/([A-Za-z0-9_]+)/')
 TARGET_OF = re.compile(r'src/([A-Za-z0-9_]+)/CMakeFiles/([A-Za-z0-9_.+-]+)\.dir/')
 BUILT = re.compile(r'Built target (\S+)')
+MAKE_PERCENT = re.compile(r'^\[ *(\d+)%\]')
 
 
 class Progress:
@@ -26,6 +27,7 @@ class Progress:
         self.package_of = {}  # make target -> package, learnt from its object files
         self.files = {}  # package -> object files compiled so far
         self.current = None  # the package of the latest compile line
+        self.percent = None  # make's latest progress figure
         self.last_output = 0.0
         self.lock = threading.Lock()
 
@@ -43,6 +45,9 @@ class Progress:
 
     def read(self, text):
         now = self.clock() - self.start
+        percent = MAKE_PERCENT.match(text)
+        if percent:
+            self.percent = int(percent.group(1))
         if PASS_THROUGH.search(text):
             self.write(text if text.endswith('\n') else text + '\n', now)
         target = TARGET_OF.search(text)
@@ -70,11 +75,14 @@ class Progress:
             now = self.clock() - self.start
             if now - self.last_output < HEARTBEAT_S:
                 return
-            if self.current is None:
-                self.write('%s configuring\n' % self.stamp(now), now)
+            if self.percent is None:
+                where = 'configuring'
+            elif self.current is None:
+                where = 'building: make at %d%%' % self.percent
             else:
-                self.write('%s building %s: %d files compiled so far\n' % (
-                    self.stamp(now), self.current, self.files.get(self.current, 0)), now)
+                where = 'building %s: %d files compiled so far, make at %d%%' % (
+                    self.current, self.files.get(self.current, 0), self.percent)
+            self.write('%s %s\n' % (self.stamp(now), where), now)
 
     def summary(self):
         total = self.clock() - self.start
@@ -90,13 +98,23 @@ def beat(progress, done):
         progress.heartbeat()
 
 
-def main():
-    progress = Progress(sys.stdout)
+def follow(lines, progress, log=None):
+    """Feeds `lines` to `progress` (and copies them to `log`), with a heartbeat every second
+    while it waits for the next line."""
     done = threading.Event()
-    threading.Thread(target=beat, args=(progress, done), daemon=True).start()
-    for text in sys.stdin:
+    beat_thread = threading.Thread(target=beat, args=(progress, done), daemon=True)
+    beat_thread.start()
+    for text in lines:
+        if log is not None:
+            log.write(text)
         progress.line(text)
     done.set()
+    beat_thread.join()
+
+
+def main():
+    progress = Progress(sys.stdout)
+    follow(sys.stdin, progress)
     if progress.spans:
         sys.stdout.write(progress.summary())
 

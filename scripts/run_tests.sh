@@ -1,7 +1,9 @@
 #!/bin/bash
-# Builds and runs every test of the workspace (gtests, nosetests, rostests, GUI
-# tests) inside one private X server, then prints a summary and exits non-zero
-# if any test failed, errored or left no result.
+# Builds the test programs (-j2) and runs every test of the workspace (gtests, nosetests,
+# rostests, GUI tests, the benchmark scripts' own checks) on TEST_JOBS workers at once
+# (default 2), each worker with its own Xvfb server (scripts/test_runner.py); then prints
+# a summary and exits non-zero if any test failed, errored, outlived its time limit or
+# left no result.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
@@ -13,29 +15,26 @@ export ROS_MASTER_URI=http://localhost:11311
 unset ROS_IP
 export LIBGL_ALWAYS_SOFTWARE=1
 export QT_X11_NO_MITSHM=1
-rm -rf build/test_results build/.tests_done
+rm -rf build/test_results build/test_output
 # ROS's setup scripts read unset variables.
 set +u
 # shellcheck disable=SC1091
 source devel/setup.bash
 set -u
-# A line per result file as it appears, and the ten slowest at the end.
-/usr/bin/python3 -u scripts/results_watch.py build/test_results --stop build/.tests_done &
-progress_pid=$!
+echo "building the test programs (full output in build/test_build.log)"
+if ! /usr/bin/python3 -u scripts/test_build.py --log build/test_build.log -- \
+    catkin_make --source . --build build -DCMAKE_BUILD_TYPE=Release \
+    -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" tests -j"${JOBS:-2}"; then
+  echo "building the test programs failed; last lines of build/test_build.log:"
+  tail -n 40 build/test_build.log
+  exit 1
+fi
 echo "running the tests (a line per result file; full output in build/test.log)"
-# Every rostest carries its own time limit; this bound only guards the whole run.
-timeout --kill-after=30 4800 xvfb-run -a -s "-screen 0 1920x1200x24 -nolisten tcp" \
-  catkin_make --source . --build build -DCMAKE_BUILD_TYPE=Release \
-  -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" run_tests -j1 > build/test.log 2>&1
+# Every job carries its own time limit; this bound only guards the whole run.
+timeout --kill-after=30 4800 /usr/bin/python3 -u scripts/test_runner.py build \
+  --jobs "${TEST_JOBS:-2}" --only "${TEST_ONLY:-}" --repo . --log build/test.log
 run_status=$?
-(( run_status == 0 )) || echo "catkin_make run_tests exited $run_status (see build/test.log)"
-# The benchmark scripts' own checks (rates, sanity of the peers, their output parsing) and
-# those of the progress lines printed here; no simulator is started. A failure shows in the
-# summary through the result file.
-/usr/bin/python3 -m pytest -q -p no:cacheprovider bench/ scripts/tests/ \
-  --junitxml=build/test_results/bench/pytest-bench.xml > build/test_bench.log 2>&1
-touch build/.tests_done
-wait "$progress_pid"
+(( run_status == 0 )) || echo "the test runner exited $run_status (see build/test.log)"
 /usr/bin/python3 scripts/test_summary.py build/test_results
 summary_status=$?
 (( run_status == 0 && summary_status == 0 ))

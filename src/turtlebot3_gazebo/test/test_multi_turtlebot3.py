@@ -48,6 +48,13 @@ def wait_for(condition, what):
     raise AssertionError('timed out waiting for ' + what)
 
 
+def stopped_since(odom, stamp):
+    """An odometry message newer than stamp with the robot at rest."""
+    twist = odom.twist.twist
+    return (odom.header.stamp > stamp and abs(twist.linear.x) < 1e-3
+            and abs(twist.angular.z) < 1e-3)
+
+
 class TestMultiTurtlebot3(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -98,7 +105,8 @@ class TestMultiTurtlebot3(unittest.TestCase):
             pub.publish(command)
             rospy.sleep(0.1)
         pub.publish(Twist())
-        rospy.sleep(0.5)
+        stop = rospy.Time.now()
+        wait_for(lambda: stopped_since(self.odom['tb3_0'].get(), stop), 'tb3_0 at rest')
         after = {r: self.odom[r].get().pose.pose.position for r in ROBOTS}
         moved = after['tb3_0'].y - before['tb3_0'].y
         self.assertGreater(moved, 0.15)  # about 0.2 m forward (+y) at 0.1 m/s for 2 s

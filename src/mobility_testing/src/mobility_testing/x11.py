@@ -1,6 +1,6 @@
 """Finding, driving and photographing X windows with xdotool and ImageMagick.
 
-Every function uses the X server named by $DISPLAY (under `make test`, one Xvfb)."""
+Every function uses the X server named by $DISPLAY (under `make test`, its worker's Xvfb)."""
 import os
 import re
 import subprocess
