@@ -8,14 +8,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import build_progress  # noqa: E402
-
-
-class Clock:
-    def __init__(self):
-        self.now = 0.0
-
-    def __call__(self):
-        return self.now
+from hand_clock import Clock  # noqa: E402
 
 
 def test_a_line_when_a_package_starts_and_its_span_at_the_end():

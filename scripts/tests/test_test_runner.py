@@ -15,6 +15,7 @@ import test_jobs  # noqa: E402
 import test_runner  # noqa: E402
 from test_progress import Progress  # noqa: E402
 from test_summary import count_file  # noqa: E402
+from hand_clock import Clock  # noqa: E402
 
 PASSING = '<testsuite><testcase classname="c" name="a"/><testcase classname="c" name="b"/></testsuite>'
 
@@ -171,14 +172,6 @@ def test_a_job_that_leaves_no_result_file_counts_as_failed():
     result = os.path.join(folder, 'results', 'p', 'silent.xml')
     assert count_file(result) == {'passed': 0, 'failed': 1, 'skipped': 0}
     assert 'FAIL p/silent.xml: 0 passed, 1 failed' in lines
-
-
-class Clock:
-    def __init__(self):
-        self.now = 0.0
-
-    def __call__(self):
-        return self.now
 
 
 def test_running_jobs_are_named_after_25_quiet_seconds():
