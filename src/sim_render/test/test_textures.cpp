@@ -20,11 +20,13 @@ const Rgb kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kWhite{255, 255,
 template <class ColourOf>
 std::shared_ptr<const Texture> makeTexture(int width, int height, ColourOf colour_of) {
   std::vector<std::uint8_t> rgb;
+  rgb.reserve(static_cast<size_t>(width) * height * 3);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const Rgb c = colour_of(x, y);
-      rgb.insert(rgb.end(), {static_cast<std::uint8_t>(c[0]), static_cast<std::uint8_t>(c[1]),
-                             static_cast<std::uint8_t>(c[2])});
+      for (int channel = 0; channel < 3; ++channel) {
+        rgb.push_back(static_cast<std::uint8_t>(c[channel]));
+      }
     }
   }
   return std::make_shared<const Texture>(width, height, std::move(rgb));
