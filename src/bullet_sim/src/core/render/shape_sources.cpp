@@ -2,8 +2,7 @@
 
 #include <algorithm>
 
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
+#include "render/image_file.h"
 
 namespace bullet_sim {
 
@@ -26,19 +25,14 @@ std::shared_ptr<const sim_render::Texture> TextureImages::load(const std::string
   if (path.empty()) return nullptr;
   auto [it, inserted] = images_.try_emplace(path);
   if (!inserted) return it->second;
-  const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
-  if (bgr.empty()) {
-    warnings_->push_back("texture " + path + ": cannot read the image: drawn in its colour");
+  RgbImage image;
+  std::string error;
+  if (!readRgbImage(path, &image, &error)) {
+    warnings_->push_back("texture " + path + ": " + error + ": drawn in its colour");
     return nullptr;
   }
-  cv::Mat rgb;
-  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-  std::vector<uint8_t> bytes(rgb.total() * 3);
-  for (int row = 0; row < rgb.rows; ++row) {
-    std::copy(rgb.ptr<uint8_t>(row), rgb.ptr<uint8_t>(row) + rgb.cols * 3,
-              bytes.begin() + static_cast<size_t>(row) * rgb.cols * 3);
-  }
-  it->second = std::make_shared<const sim_render::Texture>(rgb.cols, rgb.rows, std::move(bytes));
+  it->second = std::make_shared<const sim_render::Texture>(image.width, image.height,
+                                                           std::move(image.bytes));
   return it->second;
 }
 

@@ -28,7 +28,7 @@ class MeshTriangles {
            std::vector<std::shared_ptr<const sim_render::Mesh>>> parts_;
 };
 
-/// Texture images, each file decoded once (OpenCV) and shared by every shape showing it.
+/// Texture images, each file decoded once (render/image_file.h) and shared by every shape showing it.
 class TextureImages {
  public:
   explicit TextureImages(std::vector<std::string>* warnings) : warnings_(warnings) {}
