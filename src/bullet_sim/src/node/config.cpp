@@ -1,6 +1,5 @@
 #include "config.h"
 
-#include <ros/names.h>
 
 #include <cmath>
 #include <sstream>
@@ -63,10 +62,14 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   return config;
 }
 
-std::string commandLineWorldFile() {
-  const ros::M_string& remappings = ros::names::getUnresolvedRemappings();
-  const auto world = remappings.find("_world_file");
-  return world == remappings.end() ? "" : world->second;
+std::string commandLineWorldFile(int argc, const char* const* argv) {
+  const std::string prefix = "_world_file:=";
+  std::string world;
+  for (int i = 1; i < argc; ++i) {  // the last one counts, as for roscpp's parameters
+    const std::string arg = argv[i];
+    if (arg.compare(0, prefix.size(), prefix) == 0) world = arg.substr(prefix.size());
+  }
+  return world;
 }
 
 }  // namespace bullet_sim_node

@@ -36,9 +36,10 @@ struct Config {
 /// Throws ConfigError naming the parameter and its value when one is missing or out of range.
 Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh);
 
-/// The world file given on the command line as a private parameter (`_world_file:=PATH`,
-/// as gzserver starts the node), known after ros::init without asking the master; "" when
-/// it is not there (the parameter server may still hold ~world_file).
-std::string commandLineWorldFile();
+/// The world file given on the command line `argv` as a private parameter
+/// (`_world_file:=PATH`, as gzserver starts the node), known before ros::init; "" when it is
+/// not there (the parameter server may still hold ~world_file). roscpp turns such arguments
+/// into parameters and keeps them out of its remappings, so they are read here.
+std::string commandLineWorldFile(int argc, const char* const* argv);
 
 }  // namespace bullet_sim_node

@@ -30,12 +30,14 @@ std::future<bullet_sim::WorldSpec> preloadWorld(const std::string& world_file) {
                     [world_file] { return bullet_sim::loadWorldFile(world_file); });
 }
 
-/// The simulator, with the preloaded world when it is the one ~world_file names.
+/// The simulator, with the world preloaded from `preloaded_file` when it is the one
+/// ~world_file names.
 std::unique_ptr<SimulatorNode> startSimulator(const Config& config,
+                                              const std::string& preloaded_file,
                                               std::future<bullet_sim::WorldSpec>* preloaded,
                                               const ros::NodeHandle& nh,
                                               const ros::NodeHandle& gazebo_nh) {
-  if (preloaded->valid() && config.world_file == bullet_sim_node::commandLineWorldFile()) {
+  if (preloaded->valid() && config.world_file == preloaded_file) {
     return std::make_unique<SimulatorNode>(config, preloaded->get(), nh, gazebo_nh);
   }
   return std::make_unique<SimulatorNode>(config, nh, gazebo_nh);
@@ -45,15 +47,15 @@ std::unique_ptr<SimulatorNode> startSimulator(const Config& config,
 
 int main(int argc, char** argv) {
   bullet_sim_node::collectExportedModelPaths();
+  const std::string world_file = bullet_sim_node::commandLineWorldFile(argc, argv);
+  std::future<bullet_sim::WorldSpec> world = preloadWorld(world_file);
   ros::init(argc, argv, "bullet_sim");
-  std::future<bullet_sim::WorldSpec> world =
-      preloadWorld(bullet_sim_node::commandLineWorldFile());
   ros::NodeHandle nh;  // outlives the messages below: its end shuts roscpp's console down
   try {
     const Config config = bullet_sim_node::readConfig(nh, ros::NodeHandle("~"));
     const ros::NodeHandle gazebo_nh("/gazebo");
     const std::unique_ptr<SimulatorNode> simulator =
-        startSimulator(config, &world, nh, gazebo_nh);
+        startSimulator(config, world_file, &world, nh, gazebo_nh);
     ros::CallbackQueue& callbacks = *ros::getGlobalCallbackQueue();
     while (ros::ok()) simulator->spinOnce(callbacks);
     return 0;
