@@ -43,12 +43,24 @@ void PhysicsWorlds::regroup(double dt_s) {
     if (!entry.second.robot) continue;
     GroupMember m;
     m.id = entry.first;
-    m.collides = entry.second.robot->bounds(&m.aabb_min, &m.aabb_max, &m.speed_mps);
     m.group = entry.second.group;
     members_.push_back(m);
   }
-  const std::vector<int> groups = contactGroups(members_, dt_s);
   busy_.clear();
+  if (members_.size() < 2) {
+    // No two robots to group, and no bounds needed: a lone robot steps at home.
+    for (const GroupMember& m : members_) {
+      Home& home = homes_.at(m.id);
+      home.robot->moveToWorld(home.world->dynamics());
+      home.group = m.id;
+      busy_.push_back(home.world.get());
+    }
+    return;
+  }
+  for (GroupMember& m : members_) {
+    m.collides = homes_.at(m.id).robot->bounds(&m.aabb_min, &m.aabb_max, &m.speed_mps);
+  }
+  const std::vector<int> groups = contactGroups(members_, dt_s);
   for (size_t i = 0; i < members_.size(); ++i) {
     Home& home = homes_.at(members_[i].id);
     PhysicsWorld& world = *homes_.at(groups[i]).world;
@@ -60,6 +72,10 @@ void PhysicsWorlds::regroup(double dt_s) {
 
 void PhysicsWorlds::step(double dt_s) {
   regroup(dt_s);
+  if (busy_.size() == 1) {
+    busy_[0]->step(dt_s);  // one world: no job for the pool
+    return;
+  }
   pool_.run(busy_.size(), [this, dt_s](size_t i) { busy_[i]->step(dt_s); });
 }
 

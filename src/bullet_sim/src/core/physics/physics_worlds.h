@@ -52,6 +52,8 @@ class PhysicsWorlds {
     PhysicsRobot* robot = nullptr;  ///< null until attached, and after detach
     int group = 0;                  ///< the home (robot id) it is simulated in now
   };
+  /// Puts each robot in the world of its contact group for the coming step of dt_s and
+  /// lists the worlds to step in busy_. A lone robot steps at home, its bounds unread.
   void regroup(double dt_s);
 
   StaticShapes statics_;
