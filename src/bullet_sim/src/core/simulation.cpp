@@ -296,6 +296,10 @@ JointStateData Simulation::readJointStates(const std::string& robot) const {
   JointStateData js;
   js.time_s = timeS();
   const auto& joints = r.physics->plan().joints;
+  js.names.reserve(joints.size());
+  js.positions.reserve(joints.size());
+  js.velocities.reserve(joints.size());
+  js.efforts.reserve(joints.size());
   for (size_t i = 0; i < joints.size(); ++i) {
     js.names.push_back(joints[i].name);
     js.positions.push_back(r.physics->jointPosition(i));
@@ -308,6 +312,7 @@ JointStateData Simulation::readJointStates(const std::string& robot) const {
 std::vector<LinkPose> Simulation::linkPoses(const std::string& robot) const {
   const Impl::Robot& r = impl_->robot(robot);
   std::vector<LinkPose> poses;
+  poses.reserve(r.physics->plan().body_of_link.size());
   for (const auto& link : r.physics->plan().body_of_link) {
     poses.push_back({link.first, toPose3(r.physics->linkPose(link.first))});
   }

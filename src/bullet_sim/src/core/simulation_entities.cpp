@@ -28,6 +28,7 @@ size_t checkJoint(const PhysicsRobot& robot, const std::string& robot_name,
 }  // namespace
 
 void Simulation::Impl::applyExternalForces() {
+  if (forces.wrenchCount() == 0 && forces.effortCount() == 0) return;
   const double now_s = timeAtStep(steps);
   for (const BodyWrench& w : forces.wrenchesAt(now_s)) {
     const auto it = robots.find(w.robot);

@@ -169,6 +169,27 @@ TEST(Threads, LidarSeesARobotSimulatedInAnotherWorld) {
   EXPECT_NEAR(scan.ranges[90], 1.0 - std::sqrt(0.055 * 0.055 - dx * dx), 0.03);
 }
 
+TEST(Threads, LidarSeesARobotMovedBetweenStepsAtOnce) {
+  // Two lidar reads in one step with the seen robot moved between them: each read sees it
+  // where it is (its housing's near side 0.053 m short of its base_footprint, see above).
+  SimConfig cfg;
+  cfg.threads = 2;
+  Simulation sim(bullet_sim_test::flatWorld(), cfg);
+  sim.spawnRobot("looker", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+  sim.spawnRobot("seen", bullet_sim_test::burgerSpec(), poseAt(0, 1.0, 0));
+  while (sim.timeS() < 0.2) sim.step();
+  const double dx = -0.017 - -0.032;
+  const double near_side = std::sqrt(0.055 * 0.055 - dx * dx);
+  const Pose3 seen_at = sim.modelPose("seen");
+  EXPECT_NEAR(sim.readRay("looker", 0).ranges[90], 1.0 - near_side, 0.03);
+  for (double y : {2.0, 1.5}) {
+    Pose3 moved = seen_at;
+    moved.position.y() = y;
+    sim.setModelState("seen", moved, Twist3());
+    EXPECT_NEAR(sim.readRay("looker", 0).ranges[90], y - near_side, 0.03) << "at y " << y;
+  }
+}
+
 TEST(Threads, RobotsInOneWorldCanBeDeletedAndResetInAnyOrder) {
   for (const char* first : {"pusher", "pushed"}) {
     SimConfig cfg;

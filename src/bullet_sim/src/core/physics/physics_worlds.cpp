@@ -39,27 +39,44 @@ void PhysicsWorlds::dropHome(int id) { homes_.erase(id); }
 
 void PhysicsWorlds::regroup(double dt_s) {
   members_.clear();
-  for (const auto& entry : homes_) {
+  member_homes_.clear();
+  for (auto& entry : homes_) {
     if (!entry.second.robot) continue;
     GroupMember m;
     m.id = entry.first;
-    m.collides = entry.second.robot->bounds(&m.aabb_min, &m.aabb_max, &m.speed_mps);
     m.group = entry.second.group;
     members_.push_back(m);
+    member_homes_.push_back(&entry.second);
+  }
+  busy_.clear();
+  if (members_.size() < 2) {
+    // No two robots to group, and no bounds needed: a lone robot steps at home.
+    for (size_t i = 0; i < members_.size(); ++i) moveTo(i, members_[i].id);
+    return;
+  }
+  for (size_t i = 0; i < members_.size(); ++i) {
+    GroupMember& m = members_[i];
+    m.collides = member_homes_[i]->robot->bounds(&m.aabb_min, &m.aabb_max, &m.speed_mps);
   }
   const std::vector<int> groups = contactGroups(members_, dt_s);
-  busy_.clear();
-  for (size_t i = 0; i < members_.size(); ++i) {
-    Home& home = homes_.at(members_[i].id);
-    PhysicsWorld& world = *homes_.at(groups[i]).world;
-    home.robot->moveToWorld(world.dynamics());
-    home.group = groups[i];
-    if (groups[i] == members_[i].id) busy_.push_back(&world);
-  }
+  for (size_t i = 0; i < members_.size(); ++i) moveTo(i, groups[i]);
+}
+
+void PhysicsWorlds::moveTo(size_t member, int group) {
+  Home& home = *member_homes_[member];
+  const bool host = group == members_[member].id;
+  PhysicsWorld& world = host ? *home.world : *homes_.at(group).world;
+  home.robot->moveToWorld(world.dynamics());
+  home.group = group;
+  if (host) busy_.push_back(&world);
 }
 
 void PhysicsWorlds::step(double dt_s) {
   regroup(dt_s);
+  if (busy_.size() == 1) {
+    busy_[0]->step(dt_s);  // one world: no job for the pool
+    return;
+  }
   pool_.run(busy_.size(), [this, dt_s](size_t i) { busy_[i]->step(dt_s); });
 }
 

@@ -52,7 +52,12 @@ class PhysicsWorlds {
     PhysicsRobot* robot = nullptr;  ///< null until attached, and after detach
     int group = 0;                  ///< the home (robot id) it is simulated in now
   };
+  /// Puts each robot in the world of its contact group for the coming step of dt_s and
+  /// lists the worlds to step in busy_. A lone robot steps at home, its bounds unread.
   void regroup(double dt_s);
+  /// Puts members_[member] in the world of robot `group` for the coming step; a robot
+  /// in its own world makes that world busy.
+  void moveTo(size_t member, int group);
 
   StaticShapes statics_;
   Eigen::Vector3d gravity_;
@@ -60,6 +65,7 @@ class PhysicsWorlds {
   RayScene rays_;
   StepPool pool_;
   std::vector<GroupMember> members_;  ///< the attached robots of the last regroup, by id
+  std::vector<Home*> member_homes_;   ///< their homes
   std::vector<PhysicsWorld*> busy_;   ///< the worlds stepped in the last step, by host id
 };
 

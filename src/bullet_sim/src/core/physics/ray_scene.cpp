@@ -44,6 +44,8 @@ void RayScene::removeRobot(int id) {
 void RayScene::sync() {
   for (auto& robot : robots_) {
     for (StandIn& s : robot.second) {
+      // Sensors of many robots read in one step: each body's box is updated once.
+      if (s.object->getWorldTransform() == s.body->getWorldTransform()) continue;
       s.object->setWorldTransform(s.body->getWorldTransform());
       world_->updateSingleAabb(s.object.get());
     }

@@ -25,7 +25,8 @@ class RayScene {
 
   void addRobot(int id, const PhysicsRobot& robot);
   void removeRobot(int id);
-  /// Puts every stand-in where its body is now.
+  /// Puts every stand-in where its body is now (those of bodies that moved since the last
+  /// sync).
   void sync();
   btCollisionWorld& world() { return *world_; }
 
