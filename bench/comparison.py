@@ -69,6 +69,9 @@ RATIOS = (
 # and in the core alone on every thread and on one.
 LINE_FIGURES = ("robots_1", "robots_4", "robots_16", "robots_nodelet_16", "robots_core_1",
                 "robots_core_16", "robots_core_16_1thread")
+# Then the launch to first /scan (s; roslaunch's own master, a running one) and the node's
+# resident memory (MB), medians.
+LINE_LAUNCH = (("launch_own", "%.2f"), ("launch_running", "%.2f"), ("memory", "%.1f"))
 
 
 # Ratios shown in the table only: the single-process runs by CPU time, which a shared
@@ -112,10 +115,13 @@ def table(measurements, results):
 
 def last_line(results, loadavg):
     """The one summary line: the ratios to MuJoCo and PyBullet, the robots' real-time
-    factors (medians) and the load average (1, 5, 15 minutes) when it was printed."""
+    factors, the launch times and memory (medians) and the load average (1, 5, 15
+    minutes) when it was printed."""
     parts = ["%s=%.2f" % (key, ratio(results, n, d, inv)) for key, n, d, inv in RATIOS
              if n in results and d in results]
     parts += ["%s=%.1f" % (key, statistics.median(results[key])) for key in LINE_FIGURES
+              if key in results]
+    parts += [("%s=" + form) % (key, statistics.median(results[key])) for key, form in LINE_LAUNCH
               if key in results]
     parts.append("loadavg=%.2f/%.2f/%.2f" % tuple(loadavg))
     return " ".join(parts)
