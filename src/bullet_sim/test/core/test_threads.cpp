@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -154,39 +155,48 @@ TEST(Threads, ABurgerPushesAnotherSimulatedInAWorldOfItsOwn) {
   }
 }
 
-TEST(Threads, LidarSeesARobotSimulatedInAnotherWorld) {
+namespace {
+
+// Where ray 90 (+y) of a Burger's scanner at x -0.032 meets, at the scan plane, another
+// Burger's lidar housing, short of that robot's base_footprint: the housing is a cylinder
+// of radius 0.055 m whose axis is 0.017 m behind its base_footprint (scan_joint x -0.032,
+// collision origin x +0.015).
+double housingNearSide() {
+  const double dx = -0.017 - -0.032;
+  return std::sqrt(0.055 * 0.055 - dx * dx);
+}
+
+/// "looker" at the origin and "seen" 1 m to its left, each in a world of its own (2 threads),
+/// after 0.2 s at rest.
+std::unique_ptr<Simulation> twoBurgersApart() {
   SimConfig cfg;
   cfg.threads = 2;
-  Simulation sim(bullet_sim_test::flatWorld(), cfg);
-  sim.spawnRobot("looker", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
-  sim.spawnRobot("seen", bullet_sim_test::burgerSpec(), poseAt(0, 1.0, 0));
-  while (sim.timeS() < 0.2) sim.step();
-  // Ray 90 (+y) from the looker's scanner at x -0.032 meets, at the scan plane, the other's
-  // lidar housing: a cylinder of radius 0.055 m whose axis is 0.017 m behind that robot's
-  // base_footprint (scan_joint x -0.032, collision origin x +0.015).
-  const double dx = -0.017 - -0.032;
-  const LaserScanData scan = sim.readRay("looker", 0);
-  EXPECT_NEAR(scan.ranges[90], 1.0 - std::sqrt(0.055 * 0.055 - dx * dx), 0.03);
+  auto sim = std::make_unique<Simulation>(bullet_sim_test::flatWorld(), cfg);
+  sim->spawnRobot("looker", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+  sim->spawnRobot("seen", bullet_sim_test::burgerSpec(), poseAt(0, 1.0, 0));
+  while (sim->timeS() < 0.2) sim->step();
+  return sim;
+}
+
+}  // namespace
+
+TEST(Threads, LidarSeesARobotSimulatedInAnotherWorld) {
+  const auto sim = twoBurgersApart();
+  EXPECT_NEAR(sim->readRay("looker", 0).ranges[90], 1.0 - housingNearSide(), 0.03);
 }
 
 TEST(Threads, LidarSeesARobotMovedBetweenStepsAtOnce) {
   // Two lidar reads in one step with the seen robot moved between them: each read sees it
-  // where it is (its housing's near side 0.053 m short of its base_footprint, see above).
-  SimConfig cfg;
-  cfg.threads = 2;
-  Simulation sim(bullet_sim_test::flatWorld(), cfg);
-  sim.spawnRobot("looker", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
-  sim.spawnRobot("seen", bullet_sim_test::burgerSpec(), poseAt(0, 1.0, 0));
-  while (sim.timeS() < 0.2) sim.step();
-  const double dx = -0.017 - -0.032;
-  const double near_side = std::sqrt(0.055 * 0.055 - dx * dx);
-  const Pose3 seen_at = sim.modelPose("seen");
-  EXPECT_NEAR(sim.readRay("looker", 0).ranges[90], 1.0 - near_side, 0.03);
+  // where it is.
+  const auto sim = twoBurgersApart();
+  const Pose3 seen_at = sim->modelPose("seen");
+  EXPECT_NEAR(sim->readRay("looker", 0).ranges[90], 1.0 - housingNearSide(), 0.03);
   for (double y : {2.0, 1.5}) {
     Pose3 moved = seen_at;
     moved.position.y() = y;
-    sim.setModelState("seen", moved, Twist3());
-    EXPECT_NEAR(sim.readRay("looker", 0).ranges[90], y - near_side, 0.03) << "at y " << y;
+    sim->setModelState("seen", moved, Twist3());
+    EXPECT_NEAR(sim->readRay("looker", 0).ranges[90], y - housingNearSide(), 0.03)
+        << "at y " << y;
   }
 }
 
