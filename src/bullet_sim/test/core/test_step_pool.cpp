@@ -1,7 +1,10 @@
 // StepPool: every piece of every job runs once, on any number of threads; HelperChoice.
+#include <pthread.h>
+
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -40,6 +43,32 @@ TEST(StepPool, RethrowsWhatAPieceThrewAfterTheOthersRan) {
   std::atomic<int> after{0};
   pool.run(4, [&after](size_t) { after.fetch_add(1); });
   EXPECT_EQ(after.load(), 4);
+}
+
+TEST(StepPool, HelpersAreNamedByTheirIndex) {
+  StepPool pool(3);
+  const pthread_t caller = pthread_self();
+  std::vector<std::string> names(6);
+  std::atomic<int> by_helpers{0};
+  pool.run(names.size(), [&](size_t i) {
+    if (pthread_equal(pthread_self(), caller)) {
+      // The caller holds its first piece until a helper has run one (the helpers' own
+      // pieces are 1, 2, 4, 5), so that a helper's name is seen.
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+      while (by_helpers.load() == 0 && std::chrono::steady_clock::now() < deadline) {
+      }
+      names[i] = "caller";
+      return;
+    }
+    char name[16] = {};
+    pthread_getname_np(pthread_self(), name, sizeof(name));
+    names[i] = name;
+    by_helpers.fetch_add(1);
+  });
+  ASSERT_GT(by_helpers.load(), 0);
+  for (const std::string& name : names) {
+    EXPECT_TRUE(name == "caller" || name == "sim_step_1" || name == "sim_step_2") << name;
+  }
 }
 
 TEST(StepPool, HelperChoiceTakesTheFasterWayAndTriesTheOtherAgain) {

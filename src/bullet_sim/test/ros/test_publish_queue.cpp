@@ -2,12 +2,14 @@
 #include "topics/publish_queue.h"
 
 #include <gtest/gtest.h>
+#include <pthread.h>
 
 #include <atomic>
 #include <cstdlib>
 #include <chrono>
 #include <future>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -33,6 +35,18 @@ TEST(PublishQueue, RunsEveryCallInOrderOnItsOwnThread) {
     EXPECT_NE(id, std::this_thread::get_id());
     EXPECT_EQ(id, threads.front());
   }
+}
+
+TEST(PublishQueue, ItsThreadIsNamed) {
+  PublishQueue queue;
+  std::string name;
+  queue.push([&name] {
+    char buffer[16] = {};
+    pthread_getname_np(pthread_self(), buffer, sizeof(buffer));
+    name = buffer;
+  });
+  queue.flush();
+  EXPECT_EQ(name, "sim_publish");
 }
 
 TEST(PublishQueue, DestructionSendsWhatIsQueued) {

@@ -1,6 +1,9 @@
 #include "physics/step_pool.h"
 
+#include <pthread.h>
+
 #include <chrono>
+#include <string>
 #include <utility>
 
 namespace bullet_sim {
@@ -122,6 +125,8 @@ bool StepPool::waitForJob(uint64_t seen, uint64_t* job) {
 }
 
 void StepPool::helperLoop(unsigned thread) {
+  // Named so that top -H, perf and /proc tell the helpers from the node's other threads.
+  pthread_setname_np(pthread_self(), ("sim_step_" + std::to_string(thread)).c_str());
   uint64_t seen = 0, job = 0;
   while (waitForJob(seen, &job)) {
     seen = job;

@@ -1,5 +1,6 @@
 #include "topics/publish_queue.h"
 
+#include <pthread.h>
 #include <ros/console.h>
 
 #include <exception>
@@ -62,6 +63,7 @@ void PublishQueue::flush() {
 }
 
 void PublishQueue::run() {
+  pthread_setname_np(pthread_self(), "sim_publish");  // for top -H, perf and /proc
   using Clock = std::chrono::steady_clock;
   bool linger = false;  // the last calls came within a linger of the queue running dry
   std::unique_lock<std::mutex> lock(mutex_);
