@@ -27,6 +27,44 @@ std::string join(const std::vector<std::string>& items) {
 
 bool isBuiltin(const std::string& name) { return name == "sun" || name == "ground_plane"; }
 
+/// The <model> element of the model.config `config`, read into `doc`; null with *problem
+/// saying why when the file is not XML or has none.
+const tinyxml2::XMLElement* modelConfigRoot(const fs::path& config, tinyxml2::XMLDocument* doc,
+                                            std::string* problem) {
+  if (doc->LoadFile(config.c_str()) != tinyxml2::XML_SUCCESS) {
+    *problem = config.string() + ": malformed XML: " + doc->ErrorStr();
+    return nullptr;
+  }
+  const tinyxml2::XMLElement* model = doc->FirstChildElement("model");
+  if (!model) *problem = config.string() + ": no <model> element";
+  return model;
+}
+
+/// A model.config's <sdf version="..">FILE</sdf> entry.
+struct SdfEntry {
+  std::pair<int, int> version{-1, -1};
+  std::string file;  ///< "" when no entry is one libsdformat reads
+  std::string seen;  ///< every version given, for messages ("?" for none)
+};
+
+/// The entry of the newest version that libsdformat reads, as Gazebo picks it.
+SdfEntry newestReadableEntry(const tinyxml2::XMLElement& model) {
+  const std::pair<int, int> supported = parseVersion(sdf::SDF::Version());
+  SdfEntry best;
+  for (const tinyxml2::XMLElement* s = model.FirstChildElement("sdf"); s;
+       s = s->NextSiblingElement("sdf")) {
+    const char* version_text = s->Attribute("version");
+    const std::pair<int, int> version = parseVersion(version_text ? version_text : "");
+    best.seen += std::string(best.seen.empty() ? "" : ", ") + (version_text ? version_text : "?");
+    if (version.first < 0 || version > supported || version <= best.version || !s->GetText()) {
+      continue;
+    }
+    best.version = version;
+    best.file = s->GetText();
+  }
+  return best;
+}
+
 }  // namespace
 
 std::string builtinModelsDir() { return BULLET_SIM_BUILTIN_MODELS_DIR; }
@@ -39,37 +77,19 @@ std::string modelSdfFile(const std::string& model_dir, std::string* problem) {
     return "";
   }
   tinyxml2::XMLDocument doc;
-  if (doc.LoadFile(config.c_str()) != tinyxml2::XML_SUCCESS) {
-    *problem = config.string() + ": malformed XML: " + doc.ErrorStr();
-    return "";
-  }
-  const tinyxml2::XMLElement* model = doc.FirstChildElement("model");
-  if (!model) {
-    *problem = config.string() + ": no <model> element";
-    return "";
-  }
-  const std::pair<int, int> supported = parseVersion(sdf::SDF::Version());
-  std::pair<int, int> best{-1, -1};
-  std::string best_file, seen;
-  for (const tinyxml2::XMLElement* s = model->FirstChildElement("sdf"); s;
-       s = s->NextSiblingElement("sdf")) {
-    const char* version_text = s->Attribute("version");
-    const std::pair<int, int> version = parseVersion(version_text ? version_text : "");
-    seen += std::string(seen.empty() ? "" : ", ") + (version_text ? version_text : "?");
-    if (version.first < 0 || version > supported || version <= best || !s->GetText()) continue;
-    best = version;
-    best_file = s->GetText();
-  }
-  if (best_file.empty()) {
+  const tinyxml2::XMLElement* model = modelConfigRoot(config, &doc, problem);
+  if (!model) return "";
+  const SdfEntry entry = newestReadableEntry(*model);
+  if (entry.file.empty()) {
     *problem = config.string() + ": no <sdf version=\"..\"> entry that libsdformat " +
                sdf::SDF::Version() + " reads (versions given: " +
-               (seen.empty() ? "none" : seen) + ")";
+               (entry.seen.empty() ? "none" : entry.seen) + ")";
     return "";
   }
-  const fs::path file = fs::path(model_dir) / best_file;
+  const fs::path file = fs::path(model_dir) / entry.file;
   if (!fs::is_regular_file(file, ec)) {
-    *problem = config.string() + ": <sdf version=\"" + std::to_string(best.first) + "." +
-               std::to_string(best.second) + "\"> names " + file.string() +
+    *problem = config.string() + ": <sdf version=\"" + std::to_string(entry.version.first) +
+               "." + std::to_string(entry.version.second) + "\"> names " + file.string() +
                ", which does not exist";
     return "";
   }
