@@ -1,6 +1,5 @@
 #include "config.h"
 
-
 #include <cmath>
 #include <sstream>
 

@@ -14,8 +14,8 @@ struct RgbImage {
   std::vector<uint8_t> bytes;
 };
 
-/// The decoder module's file name. OpenCV's imgcodecs decodes the files; it brings about
-/// 140 shared libraries (GDAL and its formats), so it lives in a module of its own, loaded
+/// The decoder module's file name. OpenCV's imgcodecs decodes the files; it brings 128
+/// shared libraries (GDAL and its formats), so it lives in a module of its own, loaded
 /// with the first image: a simulation without textures never maps it.
 constexpr const char* kImageFileModule = "libbullet_sim_image_file.so";
 

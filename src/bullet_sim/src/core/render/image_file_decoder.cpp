@@ -1,6 +1,4 @@
 // The decoder module (libbullet_sim_image_file.so): image files through OpenCV.
-#include <algorithm>
-
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -9,15 +7,12 @@
 extern "C" bool bullet_sim_decode_rgb_image(const char* path, bullet_sim::RgbImage* image) {
   const cv::Mat bgr = cv::imread(path, cv::IMREAD_COLOR);
   if (bgr.empty()) return false;
-  cv::Mat rgb;
+  image->width = bgr.cols;
+  image->height = bgr.rows;
+  image->bytes.resize(bgr.total() * 3);
+  // Converted straight into the image's bytes: a Mat of the right size and type is written
+  // in place, its rows without padding.
+  cv::Mat rgb(bgr.rows, bgr.cols, CV_8UC3, image->bytes.data());
   cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-  const size_t row_bytes = static_cast<size_t>(rgb.cols) * 3;
-  image->width = rgb.cols;
-  image->height = rgb.rows;
-  image->bytes.resize(row_bytes * rgb.rows);
-  for (int row = 0; row < rgb.rows; ++row) {
-    std::copy(rgb.ptr<uint8_t>(row), rgb.ptr<uint8_t>(row) + row_bytes,
-              image->bytes.begin() + static_cast<ptrdiff_t>(row * row_bytes));
-  }
   return true;
 }
