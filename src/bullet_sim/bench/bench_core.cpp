@@ -175,7 +175,8 @@ int main(int argc, char** argv) {
     const auto start = Clock::now();
     while (sim.timeS() < sim_seconds) {
       const auto before_step = Clock::now();
-      const std::vector<bullet_sim::DueSensor> due_now = sim.step();
+      // As the node steps: to the next reading, at most 5 ms of sim time at a time.
+      const std::vector<bullet_sim::DueSensor> due_now = sim.stepToNextReading(5);
       auto t = Clock::now();
       physics_s += std::chrono::duration<double>(t - before_step).count();
       for (const bullet_sim::DueSensor& due : due_now) {

@@ -66,6 +66,13 @@ class Simulation {
   /// Advances exactly one physics step and returns the sensors whose update
   /// period elapsed at this step. Nothing is computed for them here.
   std::vector<DueSensor> step();
+  /// Advances up to `max_steps` physics steps (at least one), stopping after the first at
+  /// which a sensor is due, and returns the sensors due then (none when it took
+  /// `max_steps` without one). The same as step() called as often, except that robots are
+  /// grouped into worlds once for all of them (robots that may touch within them share a
+  /// world), so that each world takes them on one thread without waiting for the others.
+  /// While an external wrench or effort is set it takes one step.
+  std::vector<DueSensor> stepToNextReading(unsigned max_steps);
   double timeS() const;
   /// The threads that step the physics (SimConfig::threads, 0 resolved).
   unsigned threads() const;

@@ -108,6 +108,8 @@ void Simulation::spawnRobot(const std::string& name, const RobotSpec& spec, cons
   }
   impl_->physics->attach(r->id, r->physics.get());
   ++impl_->next_robot_id;
+  impl_->by_id.resize(impl_->next_robot_id, nullptr);
+  impl_->by_id[r->id] = r.get();
   impl_->robots[name] = std::move(r);
 }
 
@@ -117,6 +119,7 @@ bool Simulation::deleteRobot(const std::string& name) {
   if (it == impl_->robots.end()) return false;
   const int id = it->second->id;
   impl_->physics->detach(id);
+  impl_->by_id[id] = nullptr;
   impl_->robots.erase(it);
   impl_->physics->dropHome(id);
   return true;
@@ -137,32 +140,48 @@ const RobotSpec& Simulation::robotSpec(const std::string& name) const {
 
 int Simulation::spawnGeneration(const std::string& name) const { return impl_->robot(name).id; }
 
-std::vector<DueSensor> Simulation::step() {
-  const double dt = impl_->cfg.physics_step_s;
-  const uint64_t k = impl_->steps + 1;
+void Simulation::Impl::beforeStep(Robot& r, uint64_t k) {
+  const double dt = cfg.physics_step_s;
+  const double timeout_s = cfg.cmd_vel_timeout_s;
+  if (r.drive && r.command_active && timeout_s > 0 &&
+      timeAtStep(k - 1) - r.last_command_s >= timeout_s) {
+    r.drive->setCommand(0, 0);
+    r.command_active = false;
+  }
+  if (r.drive && r.schedule.driveDue(k, dt)) r.drive->updateMotors(r.physics.get(), timeAtStep(k - 1), dt);
+  r.physics->applyMotors(dt);
+}
+
+void Simulation::Impl::afterStep(Robot& r) {
+  r.physics->updateJointAngles();
+  if (r.drive) r.drive->integrateEncoder(*r.physics, cfg.physics_step_s);
+}
+
+unsigned Simulation::Impl::stepsToReading(uint64_t first, unsigned max_steps) const {
+  for (unsigned n = 1; n < max_steps; ++n) {
+    for (const auto& entry : robots) {
+      if (entry.second->schedule.anyDue(first + n - 1, cfg.physics_step_s)) return n;
+    }
+  }
+  return max_steps;
+}
+
+std::vector<DueSensor> Simulation::step() { return stepToNextReading(1); }
+
+std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps) {
+  Impl& impl = *impl_;
+  const uint64_t first = impl.steps + 1;
+  // External forces come and go with sim time: a step at a time while any is set.
+  const bool forces = impl.forces.wrenchCount() > 0 || impl.forces.effortCount() > 0;
+  const unsigned n = forces ? 1 : impl.stepsToReading(first, std::max(1u, max_steps));
+  RobotStepHooks hooks;
+  hooks.before = [&impl, first](int id, unsigned j) { impl.beforeStep(*impl.by_id[id], first + j); };
+  hooks.after = [&impl](int id, unsigned) { impl.afterStep(*impl.by_id[id]); };
+  impl.applyExternalForces();
+  impl.physics->step(impl.cfg.physics_step_s, n, hooks);
+  impl.steps = first + n - 1;
   std::vector<DueSensor> due;
-  const double timeout_s = impl_->cfg.cmd_vel_timeout_s;
-  for (auto& entry : impl_->robots) {
-    Impl::Robot& r = *entry.second;
-    if (r.drive && r.command_active && timeout_s > 0 &&
-        timeS() - r.last_command_s >= timeout_s) {
-      r.drive->setCommand(0, 0);
-      r.command_active = false;
-    }
-    if (r.drive && r.schedule.driveDue(k, dt)) {
-      r.drive->updateMotors(r.physics.get(), impl_->timeAtStep(k - 1), dt);
-    }
-    r.physics->applyMotors(dt);
-  }
-  impl_->applyExternalForces();
-  impl_->physics->step(dt);
-  impl_->steps = k;
-  for (auto& entry : impl_->robots) {
-    Impl::Robot& r = *entry.second;
-    r.physics->updateJointAngles();
-    if (r.drive) r.drive->integrateEncoder(*r.physics, dt);
-    r.schedule.collectDue(k, dt, &due);
-  }
+  for (auto& entry : impl.robots) entry.second->schedule.collectDue(impl.steps, impl.cfg.physics_step_s, &due);
   return due;
 }
 

@@ -80,11 +80,20 @@ struct Simulation::Impl {
 
   /// Adds the external wrenches and joint efforts acting in the coming step.
   void applyExternalForces();
+  /// Robot r's own work before step k: its command's timeout, its drive's update, its
+  /// motors. Touches r only (it runs on the thread that steps r's world).
+  void beforeStep(Robot& r, uint64_t k);
+  /// Robot r's own work once step k is taken: joint angles, wheel encoders. Touches r only.
+  void afterStep(Robot& r);
+  /// How many steps from step `first` on, at most `max_steps`, end with the first step at
+  /// which a sensor of some robot is due (max_steps when none is due in them).
+  unsigned stepsToReading(uint64_t first, unsigned max_steps) const;
 
   WorldSpec world;  ///< as loaded, with the gravity currently set
   SimConfig cfg;
   std::unique_ptr<PhysicsWorlds> physics;
   std::map<std::string, std::unique_ptr<Robot>> robots;
+  std::vector<Robot*> by_id;  ///< robots by id (null for ids no robot holds now)
   /// Steps since `epoch_s`, the sim time of the last physics-step change: sensor
   /// schedules count in steps of the current length from there.
   uint64_t steps = 0;

@@ -70,7 +70,7 @@ void SimulatorNode::spinOnce(ros::CallbackQueue& callbacks) {
     pacer_.restart(sim_->timeS());
   } else {
     callbacks.callAvailable();
-    runner_->step();
+    runner_->stepRound();
     pacer_.waitUntil(sim_->timeS());
   }
   status_->maybeReport();

@@ -83,8 +83,9 @@ void addReading(Simulation* sim, const DueSensor& due, Trace* trace) {
   }
 }
 
-/// Every pose after every step and every due reading of `seconds` of the sixteen.
-Trace runSixteen(unsigned threads, double seconds) {
+/// Every pose after every call and every due reading of `seconds` of the sixteen, stepped
+/// by step() (round_steps 0) or by stepToNextReading(round_steps).
+Trace runSixteen(unsigned threads, double seconds, unsigned round_steps = 0) {
   SimConfig cfg;
   cfg.threads = threads;
   Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
@@ -92,7 +93,9 @@ Trace runSixteen(unsigned threads, double seconds) {
   spawnSixteen(&sim);
   Trace trace;
   while (sim.timeS() < seconds) {
-    for (const DueSensor& due : sim.step()) addReading(&sim, due, &trace);
+    const std::vector<DueSensor> due =
+        round_steps == 0 ? sim.step() : sim.stepToNextReading(round_steps);
+    for (const DueSensor& d : due) addReading(&sim, d, &trace);
     for (const std::string& robot : sim.robotNames()) addPose(sim, robot, &trace);
   }
   return trace;
@@ -115,25 +118,147 @@ TEST(Threads, SixteenBurgersGiveTheSameRunToTheBitOnOneTwoAndThreeThreads) {
   expectSameBits(one, three);
 }
 
+TEST(Threads, SixteenBurgersInRoundsGiveTheSameRunToTheBitOnOneAndTwoThreads) {
+  expectSameBits(runSixteen(1, 2.5, 5), runSixteen(2, 2.5, 5));
+}
+
 TEST(Threads, SixteenBurgersMeetEachOther) {
-  // The run above is only a test of the grouping if the robots touch: the rows that drive
-  // at each other are stopped short of where they would be alone.
-  SimConfig cfg;
-  cfg.threads = 2;
-  Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
-  spawnSixteen(&sim);
-  while (sim.timeS() < 2.5) sim.step();
-  int held_back = 0;
-  for (int row = 0; row < 2; ++row) {
-    for (int col = 0; col < 4; ++col) {
-      const double y = sim.modelPose("tb3_" + std::to_string(4 * row + col)).position.y();
-      // Alone, 2.5 s at 0.2 m/s moves a robot about 0.45 m along y (less its turn); the
-      // rows start 0.45 m apart, so neither row could pass the other's start.
-      const double start = row == 0 ? -1.4 : -0.95;
-      if (std::fabs(y - start) < 0.3) ++held_back;
+  // The runs above are only a test of the grouping if the robots touch: the rows that
+  // drive at each other are stopped short of where they would be alone.
+  for (unsigned round_steps : {0u, 5u}) {
+    SimConfig cfg;
+    cfg.threads = 2;
+    Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
+    spawnSixteen(&sim);
+    while (sim.timeS() < 2.5) {
+      if (round_steps == 0) {
+        sim.step();
+      } else {
+        sim.stepToNextReading(round_steps);
+      }
     }
+    int held_back = 0;
+    for (int row = 0; row < 2; ++row) {
+      for (int col = 0; col < 4; ++col) {
+        const double y = sim.modelPose("tb3_" + std::to_string(4 * row + col)).position.y();
+        // Alone, 2.5 s at 0.2 m/s moves a robot about 0.45 m along y (less its turn); the
+        // rows start 0.45 m apart, so neither row could pass the other's start.
+        const double start = row == 0 ? -1.4 : -0.95;
+        if (std::fabs(y - start) < 0.3) ++held_back;
+      }
+    }
+    EXPECT_GE(held_back, 4) << "rounds of " << round_steps << " steps";
   }
-  EXPECT_GE(held_back, 4);
+}
+
+namespace {
+
+/// The Burger without its lidar, IMU and camera: only its odometry and joint states (30 Hz)
+/// end a round, so rounds are up to 34 steps long.
+RobotSpec blindBurger() {
+  RobotSpec spec = bullet_sim_test::burgerSpec();
+  spec.rays.clear();
+  spec.imus.clear();
+  spec.cameras.clear();
+  return spec;
+}
+
+/// After 6 s of "pusher" driving at 0.2 m/s into "pushed", 1 m ahead: alone the pusher
+/// would drive 1.2 m, through the other. The pusher's front is 0.038 m ahead of its
+/// base_footprint (base box 0.14 m centred 0.032 m behind it), the other's back 0.102 m
+/// behind its own: they stay at least 0.14 m apart.
+void expectPushed(const Simulation& sim, unsigned threads) {
+  const double pusher = sim.modelPose("pusher").position.x();
+  const double pushed = sim.modelPose("pushed").position.x();
+  EXPECT_GT(pushed - pusher, 0.14 - 0.005) << threads << " threads";
+  EXPECT_GT(pusher, 0.8) << threads << " threads";
+}
+
+/// Sim time in whole milliseconds (1 ms steps).
+long millis(const Simulation& sim) { return std::lround(sim.timeS() * 1000); }
+
+}  // namespace
+
+TEST(Rounds, EachEndsWithTheFirstStepAtWhichASensorIsDue) {
+  SimConfig cfg;
+  cfg.threads = 1;
+  Simulation sim(bullet_sim_test::flatWorld(), cfg);
+  sim.spawnRobot("tb3", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+  const RobotSpec& spec = sim.robotSpec("tb3");
+  ASSERT_EQ(spec.imus.size(), 1u);
+  ASSERT_EQ(spec.imus[0].update_rate_hz, 200.0);
+  ASSERT_EQ(spec.diff_drive->update_rate_hz, 30.0);
+  ASSERT_EQ(spec.cameras.at(0).update_rate_hz, 30.0);
+  // The IMU's 5 ms periods end with steps 5, 10, ...; a 30 Hz period (odometry, joint
+  // states, camera) within step 34 (34 ms x 30 Hz = 1.02 periods), then 67 (2.01).
+  std::vector<long> ends;
+  std::vector<size_t> due_counts;
+  while (sim.timeS() < 0.0695) {
+    due_counts.push_back(sim.stepToNextReading(100).size());
+    ends.push_back(millis(sim));
+  }
+  EXPECT_EQ(ends, (std::vector<long>{5, 10, 15, 20, 25, 30, 34, 35, 40, 45, 50, 55, 60, 65, 67,
+                                     70}));
+  EXPECT_EQ(due_counts, (std::vector<size_t>{1, 1, 1, 1, 1, 1, 3, 1, 1, 1, 1, 1, 1, 1, 3, 1}));
+}
+
+TEST(Rounds, EndAtTheirLengthWhenNoSensorIsDueAndTakeOneStepAtLeast) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  EXPECT_TRUE(sim.stepToNextReading(7).empty());
+  EXPECT_EQ(millis(sim), 7);
+  sim.stepToNextReading(0);
+  EXPECT_EQ(millis(sim), 8);
+  sim.spawnRobot("tb3", blindBurger(), poseAt(0, 0, 0));
+  EXPECT_TRUE(sim.stepToNextReading(20).empty());
+  EXPECT_EQ(millis(sim), 28);
+  EXPECT_EQ(sim.stepToNextReading(20).size(), 2u);  // odometry and joint states
+  EXPECT_EQ(millis(sim), 34);
+}
+
+TEST(Rounds, TakeOneStepAtATimeWhileAnExternalWrenchIsSet) {
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("tb3", blindBurger(), poseAt(0, 0, 0));
+  BodyWrench push;
+  push.robot = "tb3";
+  push.link = "base_link";
+  push.wrench.force_n = Eigen::Vector3d(1.0, 0, 0);
+  push.window.duration_s = 0.003;
+  sim.externalForces().addWrench(push, sim.timeS());
+  std::vector<long> ends;
+  while (sim.timeS() < 0.0335) {
+    sim.stepToNextReading(20);
+    ends.push_back(millis(sim));
+  }
+  // The wrench acts in the steps that start at 0, 1 and 2 ms and is dropped at the next.
+  EXPECT_EQ(ends, (std::vector<long>{1, 2, 3, 4, 24, 34}));
+}
+
+TEST(Rounds, AreStepByStepToTheBitForRobotsApart) {
+  // Robots that never come near each other are grouped alike whatever the rounds' length:
+  // every pose and reading is the same as step by step.
+  const auto run = [](unsigned round_steps) {
+    SimConfig cfg;
+    cfg.threads = 2;
+    Simulation sim(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
+    sim.spawnRobot("south", bullet_sim_test::burgerSpec(), poseAt(-0.55, -1.4, M_PI / 2));
+    sim.spawnRobot("north", bullet_sim_test::burgerSpec(), poseAt(0.35, 0.75, -M_PI / 2));
+    sim.setCmdVel("south", 0.15, 0.2);
+    sim.setCmdVel("north", 0.1, -0.3);
+    Trace trace;
+    while (sim.timeS() < 1.0) {
+      const std::vector<DueSensor> due =
+          round_steps == 0 ? sim.step() : sim.stepToNextReading(round_steps);
+      for (const DueSensor& d : due) addReading(&sim, d, &trace);
+      if (!due.empty()) {
+        for (const std::string& robot : sim.robotNames()) addPose(sim, robot, &trace);
+      }
+    }
+    return trace;
+  };
+  const Trace by_step = run(0);
+  EXPECT_GT(by_step.bits.size(), 1000u);
+  expectSameBits(by_step, run(5));
+  expectSameBits(by_step, run(40));
 }
 
 TEST(Threads, ABurgerPushesAnotherSimulatedInAWorldOfItsOwn) {
@@ -145,13 +270,21 @@ TEST(Threads, ABurgerPushesAnotherSimulatedInAWorldOfItsOwn) {
     sim.spawnRobot("pushed", bullet_sim_test::burgerSpec(), poseAt(1.0, 0, 0));
     sim.setCmdVel("pusher", 0.2, 0);
     while (sim.timeS() < 6.0) sim.step();
-    // Alone the pusher would drive 1.2 m in 6 s, through the other. The pusher's front is
-    // 0.038 m ahead of its base_footprint (base box 0.14 m centred 0.032 m behind it), the
-    // other's back 0.102 m behind its own: they stay at least 0.14 m apart.
-    const double pusher = sim.modelPose("pusher").position.x();
-    const double pushed = sim.modelPose("pushed").position.x();
-    EXPECT_GT(pushed - pusher, 0.14 - 0.005) << threads << " threads";
-    EXPECT_GT(pusher, 0.8) << threads << " threads";
+    expectPushed(sim, threads);
+  }
+}
+
+TEST(Rounds, ABurgerPushesAnotherSimulatedInAWorldOfItsOwn) {
+  // Rounds of up to 34 steps: the worlds are grouped for all of a round's steps at once.
+  for (unsigned threads : {1u, 2u}) {
+    SimConfig cfg;
+    cfg.threads = threads;
+    Simulation sim(bullet_sim_test::flatWorld(), cfg);
+    sim.spawnRobot("pusher", blindBurger(), poseAt(0, 0, 0));
+    sim.spawnRobot("pushed", blindBurger(), poseAt(1.0, 0, 0));
+    sim.setCmdVel("pusher", 0.2, 0);
+    while (sim.timeS() < 6.0) sim.stepToNextReading(100);
+    expectPushed(sim, threads);
   }
 }
 

@@ -6,10 +6,10 @@
 namespace bullet_sim {
 namespace {
 
-bool mayTouch(const GroupMember& a, const GroupMember& b, double dt_s) {
+bool mayTouch(const GroupMember& a, const GroupMember& b, double horizon_s) {
   if (!a.collides || !b.collides) return false;
   const double margin = (a.group == b.group ? kKeepMarginM : kJoinMarginM) +
-                        2.0 * (a.speed_mps + b.speed_mps) * dt_s;
+                        2.0 * (a.speed_mps + b.speed_mps) * horizon_s;
   for (int axis = 0; axis < 3; ++axis) {
     if (a.aabb_min[axis] - margin > b.aabb_max[axis] ||
         b.aabb_min[axis] - margin > a.aabb_max[axis]) {
@@ -26,12 +26,12 @@ int root(std::vector<size_t>& parent, size_t i) {
 
 }  // namespace
 
-std::vector<int> contactGroups(const std::vector<GroupMember>& members, double dt_s) {
+std::vector<int> contactGroups(const std::vector<GroupMember>& members, double horizon_s) {
   std::vector<size_t> parent(members.size());
   std::iota(parent.begin(), parent.end(), size_t{0});
   for (size_t i = 0; i < members.size(); ++i) {
     for (size_t j = i + 1; j < members.size(); ++j) {
-      if (!mayTouch(members[i], members[j], dt_s)) continue;
+      if (!mayTouch(members[i], members[j], horizon_s)) continue;
       const int ri = root(parent, i), rj = root(parent, j);
       if (ri != rj) parent[std::max(ri, rj)] = static_cast<size_t>(std::min(ri, rj));
     }

@@ -7,8 +7,8 @@
 
 namespace bullet_sim {
 
-/// Two robots whose boxes, each grown by this (plus what their speeds cover in a step),
-/// overlap may touch in the coming step and are simulated in one world.
+/// Two robots whose boxes, each grown by this (plus what their speeds cover in the steps
+/// to come), overlap may touch in those steps and are simulated in one world.
 constexpr double kJoinMarginM = 0.05;
 /// Robots already in one world stay there until their boxes are this far apart, so that
 /// two robots driving side by side do not move between worlds every step.
@@ -23,11 +23,12 @@ struct GroupMember {
   int group;         ///< the id of the robot whose world it is in now
 };
 
-/// For each member, the group it is simulated in during the coming step of dt_s: the
+/// For each member, the group it is simulated in during the coming steps, `horizon_s` of
+/// sim time in all (twice the speeds it covers allow for a speed that grows): the
 /// smallest id among the robots it may touch, directly or through others (robots whose
 /// grown boxes overlap, see kJoinMarginM and kKeepMarginM). The result depends on the
 /// members and their order only.
-std::vector<int> contactGroups(const std::vector<GroupMember>& members, double dt_s);
+std::vector<int> contactGroups(const std::vector<GroupMember>& members, double horizon_s);
 
 }  // namespace bullet_sim
 

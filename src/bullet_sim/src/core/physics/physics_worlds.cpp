@@ -37,7 +37,7 @@ void PhysicsWorlds::detach(int id) {
 
 void PhysicsWorlds::dropHome(int id) { homes_.erase(id); }
 
-void PhysicsWorlds::regroup(double dt_s) {
+void PhysicsWorlds::regroup(double horizon_s) {
   members_.clear();
   member_homes_.clear();
   for (auto& entry : homes_) {
@@ -48,7 +48,7 @@ void PhysicsWorlds::regroup(double dt_s) {
     members_.push_back(m);
     member_homes_.push_back(&entry.second);
   }
-  busy_.clear();
+  busy_count_ = 0;
   if (members_.size() < 2) {
     // No two robots to group, and no bounds needed: a lone robot steps at home.
     for (size_t i = 0; i < members_.size(); ++i) moveTo(i, members_[i].id);
@@ -58,26 +58,47 @@ void PhysicsWorlds::regroup(double dt_s) {
     GroupMember& m = members_[i];
     m.collides = member_homes_[i]->robot->bounds(&m.aabb_min, &m.aabb_max, &m.speed_mps);
   }
-  const std::vector<int> groups = contactGroups(members_, dt_s);
+  const std::vector<int> groups = contactGroups(members_, horizon_s);
   for (size_t i = 0; i < members_.size(); ++i) moveTo(i, groups[i]);
 }
 
 void PhysicsWorlds::moveTo(size_t member, int group) {
   Home& home = *member_homes_[member];
-  const bool host = group == members_[member].id;
+  const int id = members_[member].id;
+  const bool host = group == id;
   PhysicsWorld& world = host ? *home.world : *homes_.at(group).world;
   home.robot->moveToWorld(world.dynamics());
   home.group = group;
-  if (host) busy_.push_back(&world);
-}
-
-void PhysicsWorlds::step(double dt_s) {
-  regroup(dt_s);
-  if (busy_.size() == 1) {
-    busy_[0]->step(dt_s);  // one world: no job for the pool
+  if (host) {
+    if (busy_count_ == busy_.size()) busy_.emplace_back();
+    Busy& busy = busy_[busy_count_++];
+    busy.world = &world;
+    busy.robots.assign(1, id);
     return;
   }
-  pool_.run(busy_.size(), [this, dt_s](size_t i) { busy_[i]->step(dt_s); });
+  for (size_t i = busy_count_; i-- > 0;) {
+    if (busy_[i].world == &world) {
+      busy_[i].robots.push_back(id);
+      return;
+    }
+  }
+}
+
+void PhysicsWorlds::step(double dt_s, unsigned steps, const RobotStepHooks& hooks) {
+  regroup(dt_s * steps);
+  const auto run_world = [this, dt_s, steps, &hooks](size_t i) {
+    const Busy& busy = busy_[i];
+    for (unsigned j = 0; j < steps; ++j) {
+      for (int id : busy.robots) hooks.before(id, j);
+      busy.world->step(dt_s);
+      for (int id : busy.robots) hooks.after(id, j);
+    }
+  };
+  if (busy_count_ == 1) {
+    run_world(0);  // one world: no job for the pool
+    return;
+  }
+  pool_.run(busy_count_, run_world, steps);
 }
 
 btCollisionWorld& PhysicsWorlds::rayWorld() {

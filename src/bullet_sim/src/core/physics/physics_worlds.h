@@ -1,6 +1,7 @@
 #ifndef BULLET_SIM_CORE_PHYSICS_WORLDS_H
 #define BULLET_SIM_CORE_PHYSICS_WORLDS_H
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -18,11 +19,19 @@ namespace bullet_sim {
 
 /// The robots' physics, in as many Bullet worlds as there are robots: each robot has a
 /// home world (with the world's static shapes), and robots that may touch in the coming
-/// step (contact_groups.h) are simulated together in the home world of the one with the
+/// steps (contact_groups.h) are simulated together in the home world of the one with the
 /// smallest id; apart again, each goes back to its own. Robots in different worlds cannot
-/// touch within a step, so the worlds step on the threads of a StepPool, and the result is
+/// touch within those steps, so each world takes all of them on one thread of a StepPool
+/// (its robots' own work between steps included, see RobotStepHooks), and the result is
 /// the same to the bit whatever the number of threads. Rays are cast in a RayScene that
 /// holds every robot.
+/// What is done for each robot around each of its world's steps, on the thread that steps
+/// the world: before(id, j) ahead of the j-th step of a PhysicsWorlds::step call (from 0),
+/// after(id, j) once it is taken. Each touches robot `id`'s own state only.
+struct RobotStepHooks {
+  std::function<void(int id, unsigned j)> before, after;
+};
+
 class PhysicsWorlds {
  public:
   /// `threads` >= 1.
@@ -39,8 +48,9 @@ class PhysicsWorlds {
   void detach(int id);
   void dropHome(int id);
 
-  /// Groups the robots for the step and steps every world that holds one.
-  void step(double dt_s);
+  /// Groups the robots for `steps` steps of dt_s and steps every world that holds one
+  /// that many times, calling `hooks` for its robots around each step.
+  void step(double dt_s, unsigned steps, const RobotStepHooks& hooks);
   /// The scene for rays, every robot where it is now.
   btCollisionWorld& rayWorld();
   void setGravity(const Eigen::Vector3d& gravity);
@@ -52,11 +62,18 @@ class PhysicsWorlds {
     PhysicsRobot* robot = nullptr;  ///< null until attached, and after detach
     int group = 0;                  ///< the home (robot id) it is simulated in now
   };
-  /// Puts each robot in the world of its contact group for the coming step of dt_s and
-  /// lists the worlds to step in busy_. A lone robot steps at home, its bounds unread.
-  void regroup(double dt_s);
-  /// Puts members_[member] in the world of robot `group` for the coming step; a robot
-  /// in its own world makes that world busy.
+  /// A world to step and the robots in it, by id.
+  struct Busy {
+    PhysicsWorld* world;
+    std::vector<int> robots;
+  };
+  /// Puts each robot in the world of its contact group for the coming `horizon_s` of sim
+  /// time and lists the worlds to step in busy_. A lone robot steps at home, its bounds
+  /// unread.
+  void regroup(double horizon_s);
+  /// Puts members_[member] in the world of robot `group` for the coming steps, listing it
+  /// with that world in busy_ (a robot in its own world makes that world busy: members come
+  /// in id order, so a group's host comes before its guests).
   void moveTo(size_t member, int group);
 
   StaticShapes statics_;
@@ -66,7 +83,8 @@ class PhysicsWorlds {
   StepPool pool_;
   std::vector<GroupMember> members_;  ///< the attached robots of the last regroup, by id
   std::vector<Home*> member_homes_;   ///< their homes
-  std::vector<PhysicsWorld*> busy_;   ///< the worlds stepped in the last step, by host id
+  std::vector<Busy> busy_;            ///< the worlds stepped in the last step, by host id
+  size_t busy_count_ = 0;             ///< busy_'s first entries in use (the rest kept for reuse)
 };
 
 }  // namespace bullet_sim

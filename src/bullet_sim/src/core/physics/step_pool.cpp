@@ -42,7 +42,7 @@ StepPool::~StepPool() {
   for (std::thread& t : helpers_) t.join();
 }
 
-void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
+void StepPool::run(size_t n, const std::function<void(size_t)>& work, size_t units) {
   error_ = nullptr;
   if (helpers_.empty() || n < 2) {
     runAlone(n, work);
@@ -53,7 +53,7 @@ void StepPool::run(size_t n, const std::function<void(size_t)>& work) {
     } else {
       runAlone(n, work);
     }
-    choice_.record(std::chrono::steady_clock::now() - start, n);
+    choice_.record(std::chrono::steady_clock::now() - start, n * units);
   }
   if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
 }

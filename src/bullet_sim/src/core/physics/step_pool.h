@@ -33,7 +33,9 @@ class StepPool {
   unsigned threads() const { return static_cast<unsigned>(helpers_.size()) + 1; }
   /// Calls work(i) once for each i in [0, n) and returns when all have returned; then
   /// rethrows the first exception a piece threw (the other pieces run all the same).
-  void run(size_t n, const std::function<void(size_t)>& work);
+  /// `units` is the work in each piece (a world's steps, say), for the HelperChoice to
+  /// compare jobs of different sizes.
+  void run(size_t n, const std::function<void(size_t)>& work, size_t units = 1);
 
  private:
   void helperLoop(unsigned thread);

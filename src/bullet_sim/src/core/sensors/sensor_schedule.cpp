@@ -52,12 +52,21 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
   entries_.push_back({SensorKind::JointStates, 0, joint_state_rate_hz});
 }
 
+bool SensorSchedule::Entry::due(uint64_t k, double dt_s) const {
+  return k > origin && periodElapsed(k - origin, dt_s, rate_hz);
+}
+
 void SensorSchedule::collectDue(uint64_t k, double dt_s, std::vector<DueSensor>* due) const {
   for (const Entry& e : entries_) {
-    if (k > e.origin && periodElapsed(k - e.origin, dt_s, e.rate_hz)) {
-      due->push_back({robot_, e.kind, e.index});
-    }
+    if (e.due(k, dt_s)) due->push_back({robot_, e.kind, e.index});
   }
+}
+
+bool SensorSchedule::anyDue(uint64_t k, double dt_s) const {
+  for (const Entry& e : entries_) {
+    if (e.due(k, dt_s)) return true;
+  }
+  return false;
 }
 
 void SensorSchedule::startAfter(uint64_t spawn_step, double dt_s) {

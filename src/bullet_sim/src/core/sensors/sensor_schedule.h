@@ -34,6 +34,8 @@ class SensorSchedule {
   }
   /// Appends the sensors whose period ended with step k.
   void collectDue(uint64_t k, double dt_s, std::vector<DueSensor>* due) const;
+  /// Whether collectDue(k, dt_s, ...) would append anything.
+  bool anyDue(uint64_t k, double dt_s) const;
 
   /// A robot spawned after world step `spawn_step` (the steps already taken): its rays and
   /// cameras measure first with the next step when the world has run one of their periods
@@ -49,6 +51,7 @@ class SensorSchedule {
     size_t index;
     double rate_hz;
     uint64_t origin = 0;  ///< the step its periods count from
+    bool due(uint64_t k, double dt_s) const;  ///< its period ends with step k
   };
   std::string robot_;
   std::vector<Entry> entries_;

@@ -4,6 +4,8 @@
 
 #include <malloc.h>
 
+#include <cmath>
+
 #include <ros/console.h>
 #include <rosgraph_msgs/Clock.h>
 
@@ -13,6 +15,11 @@ namespace {
 // /clock goes out at most this often in wall time between sensor readings: enough for
 // nodes that sleep on sim time, and cheap when the simulation runs 100x real time.
 constexpr std::chrono::milliseconds kClockWallPeriod{1};
+
+// The longest stretch of sim time stepped between two looks at the node's callbacks: a
+// Burger's IMU (200 Hz) ends every round sooner. Gazebo's diff drive reads its command at
+// its update rate (30 Hz for a Burger), so a command waiting up to this is unseen.
+constexpr double kRoundS = 0.005;
 
 }  // namespace
 
@@ -69,10 +76,16 @@ const bullet_sim::Pose3& SimRunner::spawnPose(const std::string& name) const {
   return spawn_poses_.at(name);
 }
 
-void SimRunner::step() {
+unsigned SimRunner::stepRound() {
+  const double steps = std::floor(kRoundS / sim_.physicsStepS() + 1e-9);
+  return step(steps >= 1 ? static_cast<unsigned>(steps) : 1u);
+}
+
+unsigned SimRunner::step(unsigned max_steps) {
   // The step's messages wake the publishing thread once, when they are all queued.
   const PublishQueue::Batch batch(queue_);
-  const std::vector<bullet_sim::DueSensor> due = sim_.step();
+  const double before_s = sim_.timeS();
+  const std::vector<bullet_sim::DueSensor> due = sim_.stepToNextReading(max_steps);
   const auto now = std::chrono::steady_clock::now();
   // A reading stamped t goes out after the clock says t, so no listener sees the future.
   if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
@@ -86,6 +99,7 @@ void SimRunner::step() {
   }
   state_topics_.update();
   logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
+  return static_cast<unsigned>(std::lround((sim_.timeS() - before_s) / sim_.physicsStepS()));
 }
 
 void SimRunner::logSimulationWarnings() {

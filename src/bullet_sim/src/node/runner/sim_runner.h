@@ -36,8 +36,13 @@ class SimRunner {
   /// The pose a robot was spawned at (reset_world puts it back there).
   const bullet_sim::Pose3& spawnPose(const std::string& name) const;
 
-  /// Advances one physics step and publishes /clock and every due, subscribed sensor.
-  void step();
+  /// Advances the simulation to its next sensor reading, `max_steps` physics steps at
+  /// most (Simulation::stepToNextReading), and publishes /clock and every due, subscribed
+  /// sensor. Returns the steps taken.
+  unsigned step(unsigned max_steps);
+  /// step() of at most a round: kRoundS of sim time. Commands and service calls take
+  /// effect between rounds.
+  unsigned stepRound();
   /// Logs, once each, what the simulation noticed while building models.
   void logSimulationWarnings();
   /// Publishes the current sim time on /clock.

@@ -87,7 +87,7 @@ bool PhysicsServices::step(bullet_sim::StepSimulation::Request& req,
   if (!runner_.paused()) {
     res.status_message = "physics is running: call pause_physics before stepping";
   } else {
-    for (uint32_t i = 0; i < req.steps; ++i) runner_.step();
+    for (uint32_t done = 0; done < req.steps;) done += runner_.step(req.steps - done);
     runner_.publishClock();
     runner_.flushMessages();  // the caller may count them once the call returns
     res.success = true;
