@@ -94,6 +94,11 @@ class Simulation {
 
   // Sensor reads, computed on demand: a sensor nobody reads costs nothing.
   LaserScanData readRay(const std::string& robot, size_t index);
+  /// The scans of several ray sensors at once (`rays`: a robot and the index of one of its
+  /// rays each, as DueSensor names them; each sensor once), cast on the physics threads:
+  /// each the same as readRay() would read it, in the order given.
+  /// @throws std::invalid_argument for a sensor named twice.
+  std::vector<LaserScanData> readRays(const std::vector<DueSensor>& rays);
   ImuData readImu(const std::string& robot, size_t index);
   OdometryData readOdometry(const std::string& robot);
   JointStateData readJointStates(const std::string& robot) const;  ///< every non-fixed joint

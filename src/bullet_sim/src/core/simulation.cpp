@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -274,6 +275,42 @@ LaserScanData Simulation::readRay(const std::string& robot, size_t index) {
   const Eigen::Isometry3d T_world_sensor = r.physics->linkPose(spec.link) * toIsometry(spec.pose_in_link);
   castScan(impl_->physics->rayWorld(), T_world_sensor, spec, &r.ray_rngs[index], &scan);
   return scan;
+}
+
+std::vector<LaserScanData> Simulation::readRays(const std::vector<DueSensor>& rays) {
+  struct Cast {
+    const RaySpec* spec;
+    std::mt19937_64* rng;
+    Eigen::Isometry3d T_world_sensor;
+    bool cast;  ///< cast on the threads (false: it walks the broadphase, cast after)
+  };
+  std::vector<Cast> casts;
+  casts.reserve(rays.size());
+  std::set<const std::mt19937_64*> named;
+  for (const DueSensor& due : rays) {
+    Impl::Robot& r = impl_->robot(due.robot);
+    const RaySpec& spec = r.spec.rays.at(due.index);
+    std::mt19937_64* rng = &r.ray_rngs[due.index];
+    if (!named.insert(rng).second) {
+      throw std::invalid_argument("readRays: ray sensor " + std::to_string(due.index) +
+                                  " of robot '" + due.robot + "' named twice");
+    }
+    casts.push_back({&spec, rng, r.physics->linkPose(spec.link) * toIsometry(spec.pose_in_link),
+                     false});
+  }
+  std::vector<LaserScanData> scans(rays.size());
+  for (LaserScanData& scan : scans) scan.time_s = timeS();
+  impl_->physics->castInParallel(casts.size(), [&casts, &scans](size_t i, btCollisionWorld& scene) {
+    Cast& c = casts[i];
+    c.cast = castScan(scene, c.T_world_sensor, *c.spec, c.rng, &scans[i], kMaxListedScanParts,
+                      /*may_walk=*/false);
+  });
+  for (size_t i = 0; i < casts.size(); ++i) {
+    if (casts[i].cast) continue;
+    const Cast& c = casts[i];
+    castScan(impl_->physics->rayWorld(), c.T_world_sensor, *c.spec, c.rng, &scans[i]);
+  }
+  return scans;
 }
 
 ImuData Simulation::readImu(const std::string& robot, size_t index) {

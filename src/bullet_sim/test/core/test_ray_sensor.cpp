@@ -246,3 +246,27 @@ TEST(ScanParts, ASensorPoseThatIsNotFiniteSeesNothingEitherWay) {
   const Eigen::Isometry3d level = Eigen::Isometry3d::Identity();
   EXPECT_GT(expectSameScan(world.bullet(), level, lidar(0.0, 6.28319, 360)), 0);
 }
+
+TEST(ScanParts, AScanThatWouldWalkTheBroadphaseIsNotCastWhenWalksAreRefused) {
+  World world;
+  world.add(world.keep(new btBoxShape(btVector3(0.2, 0.2, 0.2))),
+            btTransform(btQuaternion::getIdentity(), btVector3(1, 0, 0)));
+  RaySpec spec = lidar(-M_PI, M_PI, 90);
+  spec.noise_stddev_m = 0.01;
+  const Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  std::mt19937_64 rng(7), untouched(7);
+  LaserScanData scan;
+  // No part may be listed (0): every ray would walk the broadphase.
+  EXPECT_FALSE(castScan(world.bullet(), pose, spec, &rng, &scan, 0, /*may_walk=*/false));
+  EXPECT_TRUE(scan.ranges.empty());
+  EXPECT_TRUE(rng == untouched);
+  // Listed, it is cast as with walks allowed, noise and all.
+  std::mt19937_64 rng_refused(7), rng_allowed(7);
+  LaserScanData refused, allowed;
+  EXPECT_TRUE(castScan(world.bullet(), pose, spec, &rng_refused, &refused, kMaxListedScanParts,
+                       /*may_walk=*/false));
+  EXPECT_TRUE(castScan(world.bullet(), pose, spec, &rng_allowed, &allowed));
+  EXPECT_EQ(refused.ranges, allowed.ranges);
+  // The box's near face is 0.8 m ahead.
+  EXPECT_NEAR(refused.ranges[45], 0.8, 0.05);
+}

@@ -333,6 +333,86 @@ TEST(Threads, LidarSeesARobotMovedBetweenStepsAtOnce) {
   }
 }
 
+namespace {
+
+/// Scans as bits, in order.
+Trace traceOf(const std::vector<DueSensor>& rays, const std::vector<LaserScanData>& scans) {
+  Trace trace;
+  for (size_t i = 0; i < scans.size(); ++i) {
+    trace.add(scans[i].time_s, rays[i].robot + " scan time");
+    for (float r : scans[i].ranges) trace.add(r, rays[i].robot + " scan");
+  }
+  return trace;
+}
+
+/// Every robot's first lidar, read together with readRays or one by one with readRay.
+Trace scansOf(Simulation* sim, bool together) {
+  std::vector<DueSensor> rays;
+  for (const std::string& robot : sim->robotNames()) rays.push_back({robot, SensorKind::Ray, 0});
+  std::vector<LaserScanData> scans;
+  if (together) {
+    scans = sim->readRays(rays);
+  } else {
+    for (const DueSensor& ray : rays) scans.push_back(sim->readRay(ray.robot, ray.index));
+  }
+  return traceOf(rays, scans);
+}
+
+/// The sixteen after 1 s on the round track.
+std::unique_ptr<Simulation> sixteenAfterOneSecond(unsigned threads) {
+  SimConfig cfg;
+  cfg.threads = threads;
+  auto sim = std::make_unique<Simulation>(loadWorldFile(bullet_sim_test::roundTrackPath()), cfg);
+  spawnSixteen(sim.get());
+  while (sim->timeS() < 1.0) sim->stepToNextReading(5);
+  return sim;
+}
+
+/// A Burger at the origin facing +x and one at (0, 1), on a flat floor with a pile of 600
+/// posts (2 x 2 x 20 cm) at (1, 0), through the scan plane: more parts within the lidars'
+/// 3.5 m than castScan lists, so their scans walk Bullet's broadphase.
+std::unique_ptr<Simulation> twoBurgersAndAPile(unsigned threads) {
+  SimConfig cfg;
+  cfg.threads = threads;
+  WorldSpec world = bullet_sim_test::flatWorld();
+  for (int i = 0; i < 600; ++i) {
+    StaticShape box;
+    static_cast<Geometry&>(box) = Geometry::box(0.02, 0.02, 0.2);
+    box.pose.position = Eigen::Vector3d(1.0, 0, 0.1);
+    world.shapes.push_back(box);
+  }
+  auto sim = std::make_unique<Simulation>(world, cfg);
+  sim->spawnRobot("looker", bullet_sim_test::burgerSpec(), poseAt(0, 0, 0));
+  sim->spawnRobot("seen", bullet_sim_test::burgerSpec(), poseAt(0, 1.0, 0));
+  while (sim->timeS() < 0.2) sim->stepToNextReading(5);
+  return sim;
+}
+
+}  // namespace
+
+TEST(Threads, ScansReadTogetherOnTwoThreadsAreTheScansReadOneByOne) {
+  const auto one_by_one = sixteenAfterOneSecond(1), together = sixteenAfterOneSecond(2);
+  const Trace expected = scansOf(one_by_one.get(), false);
+  ASSERT_EQ(expected.bits.size(), 16u * 361u);
+  expectSameBits(expected, scansOf(together.get(), true));
+}
+
+TEST(Threads, ScansThatWalkTheBroadphaseAreReadTogetherAsOneByOne) {
+  const auto one_by_one = twoBurgersAndAPile(1), together = twoBurgersAndAPile(2);
+  const Trace expected = scansOf(one_by_one.get(), false);
+  expectSameBits(expected, scansOf(together.get(), true));
+  // The pile is in the scans: the looker's scanner, 0.032 m behind its base_footprint,
+  // sees its near face 1.032 - 0.01 m straight ahead (ray 0).
+  const std::vector<DueSensor> looker = {{"looker", SensorKind::Ray, 0}};
+  EXPECT_NEAR(together->readRays(looker)[0].ranges[0], 1.022, 0.03);
+}
+
+TEST(Threads, ReadRaysRefusesASensorNamedTwice) {
+  const auto sim = twoBurgersApart();
+  const std::vector<DueSensor> twice = {{"looker", SensorKind::Ray, 0}, {"looker", SensorKind::Ray, 0}};
+  EXPECT_THROW(sim->readRays(twice), std::invalid_argument);
+}
+
 TEST(Threads, RobotsInOneWorldCanBeDeletedAndResetInAnyOrder) {
   for (const char* first : {"pusher", "pushed"}) {
     SimConfig cfg;

@@ -108,6 +108,12 @@ btCollisionWorld& PhysicsWorlds::rayWorld() {
   return rays_.world();
 }
 
+void PhysicsWorlds::castInParallel(size_t n,
+                                   const std::function<void(size_t, btCollisionWorld&)>& cast) {
+  btCollisionWorld& scene = rayWorld();
+  pool_.run(n, [&cast, &scene](size_t i) { cast(i, scene); }, 1, &scan_choice_);
+}
+
 void PhysicsWorlds::setGravity(const Eigen::Vector3d& gravity) {
   gravity_ = gravity;
   for (auto& entry : homes_) entry.second.world->dynamics()->setGravity(toBt(gravity));

@@ -53,6 +53,9 @@ class PhysicsWorlds {
   void step(double dt_s, unsigned steps, const RobotStepHooks& hooks);
   /// The scene for rays, every robot where it is now.
   btCollisionWorld& rayWorld();
+  /// Calls cast(i, scene) for each i in [0, n) on the pool's threads, with rayWorld() as
+  /// the scene: each call must only read it (no broadphase ray walk, see castScan).
+  void castInParallel(size_t n, const std::function<void(size_t, btCollisionWorld&)>& cast);
   void setGravity(const Eigen::Vector3d& gravity);
   unsigned threads() const { return pool_.threads(); }
 
@@ -81,6 +84,7 @@ class PhysicsWorlds {
   std::map<int, Home> homes_;  ///< by robot id: the order of every pass over the robots
   RayScene rays_;
   StepPool pool_;
+  HelperChoice scan_choice_;  ///< whether scans pay on the helpers, apart from the steps'
   std::vector<GroupMember> members_;  ///< the attached robots of the last regroup, by id
   std::vector<Home*> member_homes_;   ///< their homes
   std::vector<Busy> busy_;            ///< the worlds stepped in the last step, by host id

@@ -42,18 +42,20 @@ StepPool::~StepPool() {
   for (std::thread& t : helpers_) t.join();
 }
 
-void StepPool::run(size_t n, const std::function<void(size_t)>& work, size_t units) {
+void StepPool::run(size_t n, const std::function<void(size_t)>& work, size_t units,
+                   HelperChoice* choice) {
   error_ = nullptr;
+  if (!choice) choice = &choice_;
   if (helpers_.empty() || n < 2) {
     runAlone(n, work);
   } else {
     const auto start = std::chrono::steady_clock::now();
-    if (choice_.helpers()) {
+    if (choice->helpers()) {
       runWithHelpers(n, work);
     } else {
       runAlone(n, work);
     }
-    choice_.record(std::chrono::steady_clock::now() - start, n * units);
+    choice->record(std::chrono::steady_clock::now() - start, n * units);
   }
   if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
 }

@@ -34,8 +34,10 @@ class StepPool {
   /// Calls work(i) once for each i in [0, n) and returns when all have returned; then
   /// rethrows the first exception a piece threw (the other pieces run all the same).
   /// `units` is the work in each piece (a world's steps, say), for the HelperChoice to
-  /// compare jobs of different sizes.
-  void run(size_t n, const std::function<void(size_t)>& work, size_t units = 1);
+  /// compare jobs of different sizes. Jobs of another kind (scans, whose pieces cost
+  /// otherwise) keep a `choice` of their own; null: the pool's.
+  void run(size_t n, const std::function<void(size_t)>& work, size_t units = 1,
+           HelperChoice* choice = nullptr);
 
  private:
   void helperLoop(unsigned thread);

@@ -63,14 +63,19 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
 
 }  // namespace
 
-void castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
+bool castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
               const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
-              size_t max_listed_parts) {
+              size_t max_listed_parts, bool may_walk) {
+  const double increment =
+      spec.samples > 1 ? (spec.max_angle_rad - spec.min_angle_rad) / (spec.samples - 1) : 0.0;
+  ScanParts parts(toBt(T_world_sensor), spec.min_angle_rad, increment,
+                  std::max(spec.samples, 0));
+  const bool by_direction = parts.gather(world, spec.range_max_m, max_listed_parts);
+  if (!by_direction && !may_walk) return false;
   scan->frame_id = spec.frame_id;
   scan->angle_min = spec.min_angle_rad;
   scan->angle_max = spec.max_angle_rad;
-  scan->angle_increment =
-      spec.samples > 1 ? (spec.max_angle_rad - spec.min_angle_rad) / (spec.samples - 1) : 0.0;
+  scan->angle_increment = increment;
   scan->time_increment = 0;
   scan->scan_time = spec.update_rate_hz > 0 ? 1.0 / spec.update_rate_hz : 0.0;
   scan->range_min = spec.range_min_m;
@@ -83,9 +88,6 @@ void castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
   const Eigen::Vector3d origin = T_world_sensor.translation();
   const Eigen::Matrix3d R = T_world_sensor.linear();
   const double span = spec.range_max_m - spec.range_min_m;
-  ScanParts parts(toBt(T_world_sensor), spec.min_angle_rad, scan->angle_increment,
-                  std::max(spec.samples, 0));
-  const bool by_direction = parts.gather(world, spec.range_max_m, max_listed_parts);
   for (int i = 0; i < spec.samples; ++i) {
     const double angle = spec.min_angle_rad + i * scan->angle_increment;
     const Eigen::Vector3d dir = R * Eigen::Vector3d(std::cos(angle), std::sin(angle), 0.0);
@@ -107,6 +109,7 @@ void castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
     }
     scan->ranges[i] = static_cast<float>(std::clamp(range, spec.range_min_m, spec.range_max_m));
   }
+  return true;
 }
 
 }  // namespace bullet_sim

@@ -21,11 +21,15 @@ namespace bullet_sim {
 /// The shapes within range_max are listed once per scan for the rays in whose directions
 /// they lie, so each ray tests only those. With more than `max_listed_parts` shapes in
 /// range (compounds counted by their children), or with 0, each ray walks Bullet's
-/// broadphase tree instead; both give the same ranges.
+/// broadphase tree instead; both give the same ranges. Only the walk writes to the world
+/// (Bullet's broadphase keeps one ray stack for every caller in a build without
+/// BT_THREADSAFE): with `may_walk` false a scan that would walk is not cast, and false is
+/// returned with the scan and the noise generator untouched, so that scans can be cast on
+/// several threads and those that walk one at a time.
 constexpr size_t kMaxListedScanParts = 512;
-void castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
+bool castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
               const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
-              size_t max_listed_parts = kMaxListedScanParts);
+              size_t max_listed_parts = kMaxListedScanParts, bool may_walk = true);
 
 }  // namespace bullet_sim
 

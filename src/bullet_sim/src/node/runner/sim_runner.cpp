@@ -89,13 +89,26 @@ unsigned SimRunner::step(unsigned max_steps) {
   const auto now = std::chrono::steady_clock::now();
   // A reading stamped t goes out after the clock says t, so no listener sees the future.
   if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
+  // The wanted scans are cast together, on the physics threads.
+  std::vector<bullet_sim::DueSensor> scans_due;
+  std::vector<RobotIo*> scan_ios;
   for (const bullet_sim::DueSensor& sensor : due) {
     if (sensor.kind == bullet_sim::SensorKind::Camera) {
       cameras_.publish(sensor);
       continue;
     }
     const auto robot = robots_.find(sensor.robot);
-    if (robot != robots_.end()) robot->second->publish(sensor);
+    if (robot == robots_.end()) continue;
+    if (sensor.kind != bullet_sim::SensorKind::Ray) {
+      robot->second->publish(sensor);
+    } else if (robot->second->wantsScan(sensor.index)) {
+      scans_due.push_back(sensor);
+      scan_ios.push_back(robot->second.get());
+    }
+  }
+  if (!scans_due.empty()) {
+    const std::vector<bullet_sim::LaserScanData> scans = sim_.readRays(scans_due);
+    for (size_t i = 0; i < scans.size(); ++i) scan_ios[i]->publishScan(scans_due[i].index, scans[i]);
   }
   state_topics_.update();
   logSimulationWarnings();  // e.g. a command scaled to the wheels' limits

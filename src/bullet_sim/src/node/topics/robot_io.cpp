@@ -63,11 +63,7 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
 void RobotIo::publish(const bullet_sim::DueSensor& due) {
   switch (due.kind) {
     case bullet_sim::SensorKind::Ray:
-      if (due.index < scan_pubs_.size() && scan_pubs_[due.index].hasSubscribers()) {
-        sensor_msgs::LaserScan scan = toMsg(sim_.readRay(robot_, due.index));
-        scan.header.frame_id = resolveFrame(tf_prefix_, scan.header.frame_id);
-        queue_.publish(scan_pubs_[due.index].publisher(), std::move(scan));
-      }
+      if (wantsScan(due.index)) publishScan(due.index, sim_.readRay(robot_, due.index));
       break;
     case bullet_sim::SensorKind::Imu:
       if (due.index < imu_pubs_.size() && imu_pubs_[due.index].hasSubscribers()) {
@@ -86,6 +82,16 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
   }
+}
+
+bool RobotIo::wantsScan(size_t index) const {
+  return index < scan_pubs_.size() && scan_pubs_[index].hasSubscribers();
+}
+
+void RobotIo::publishScan(size_t index, const bullet_sim::LaserScanData& data) {
+  sensor_msgs::LaserScan scan = toMsg(data);
+  scan.header.frame_id = resolveFrame(tf_prefix_, scan.header.frame_id);
+  queue_.publish(scan_pubs_.at(index).publisher(), std::move(scan));
 }
 
 void RobotIo::publishOdometry() {

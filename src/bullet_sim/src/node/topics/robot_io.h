@@ -28,8 +28,13 @@ class RobotIo {
   RobotIo(const RobotIo&) = delete;
   RobotIo& operator=(const RobotIo&) = delete;
 
-  /// Publishes the reading of one due sensor of this robot, if it is wanted.
+  /// Publishes the reading of one due sensor of this robot (not a ray: see below), if it
+  /// is wanted.
   void publish(const bullet_sim::DueSensor& due);
+  /// Whether the scan of ray sensor `index` is wanted; the caller reads the scans it wants
+  /// (Simulation::readRays, several robots' at once) and publishes them here.
+  bool wantsScan(size_t index) const;
+  void publishScan(size_t index, const bullet_sim::LaserScanData& scan);
 
  private:
   void onCmdVel(const geometry_msgs::Twist::ConstPtr& command);
