@@ -87,7 +87,7 @@ class PhysicsWorlds {
   HelperChoice scan_choice_;  ///< whether scans pay on the helpers, apart from the steps'
   std::vector<GroupMember> members_;  ///< the attached robots of the last regroup, by id
   std::vector<Home*> member_homes_;   ///< their homes
-  std::vector<Busy> busy_;            ///< the worlds stepped in the last step, by host id
+  std::vector<Busy> busy_;            ///< the worlds stepped in the last round, by host id
   size_t busy_count_ = 0;             ///< busy_'s first entries in use (the rest kept for reuse)
 };
 
