@@ -1,6 +1,7 @@
 // StepPool: every piece of every job runs once, on any number of threads; HelperChoice.
 #include <pthread.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
@@ -71,20 +72,52 @@ TEST(StepPool, HelpersAreNamedByTheirIndex) {
   }
 }
 
-TEST(StepPool, HelperChoiceTakesTheFasterWayAndTriesTheOtherAgain) {
-  using std::chrono::microseconds;
-  bullet_sim::HelperChoice choice;
-  std::vector<bool> ways;
-  // Helpers take 300 us a job of 10 pieces, the caller alone 100 us: 64 jobs a window.
-  for (int job = 0; job < 64 * 40; ++job) {
-    const bool helpers = choice.helpers();
-    if (job % 64 == 0) ways.push_back(helpers);
-    choice.record(microseconds(helpers ? 300 : 100), 10);
+namespace {
+
+/// The windows (64 jobs each) that `choice` ran with helpers, of `windows` in which a job
+/// of 10 pieces takes `helpers_us` on the helpers and `alone_us` on the caller alone.
+std::vector<int> windowsWithHelpers(bullet_sim::HelperChoice* choice, int windows,
+                                    int helpers_us, int alone_us, int first_window = 0) {
+  std::vector<int> with;
+  for (int window = first_window; window < first_window + windows; ++window) {
+    const bool helpers = choice->helpers();
+    if (helpers) with.push_back(window);
+    for (int job = 0; job < 64; ++job) {
+      EXPECT_EQ(choice->helpers(), helpers) << "a way is kept for a whole window";
+      choice->record(std::chrono::microseconds(helpers ? helpers_us : alone_us), 10);
+    }
   }
-  EXPECT_TRUE(ways[0]);   // helpers first
-  EXPECT_FALSE(ways[1]);  // then alone, to compare
-  int with_helpers = 0;
-  for (size_t w = 2; w < ways.size(); ++w) with_helpers += ways[w];
-  // Alone from then on, but for one window in 16 that tries the helpers again.
-  EXPECT_EQ(with_helpers, 2);
+  return with;
+}
+
+}  // namespace
+
+TEST(StepPool, HelperChoiceTakesTheFasterWayAndTriesTheOtherLessOftenWhileItLoses) {
+  bullet_sim::HelperChoice choice;
+  // Helpers first (window 0), then alone to compare (1), which is faster: alone from then
+  // on, but for a window that tries the helpers again 16 windows after the last try, then
+  // 32, 64, and at most 128 while they keep losing.
+  EXPECT_EQ(windowsWithHelpers(&choice, 400, 300, 100),
+            (std::vector<int>{0, 17, 49, 113, 241, 369}));
+}
+
+TEST(StepPool, HelperChoiceTurnsToTheWayThatWinsItsTryAndTriesTheOtherSoon) {
+  bullet_sim::HelperChoice choice;
+  windowsWithHelpers(&choice, 400, 300, 100);  // alone chosen, the next try at window 497
+  // The helpers become the faster way: they win their next try and are kept; alone is
+  // tried 16 windows later, loses, and is tried again 32 windows after that.
+  std::vector<int> alone;
+  const std::vector<int> with = windowsWithHelpers(&choice, 200, 50, 100, 400);
+  for (int window = 400, k = 0; window < 600; ++window) {
+    if (k < static_cast<int>(with.size()) && with[k] == window) {
+      ++k;
+    } else {
+      alone.push_back(window);
+    }
+  }
+  ASSERT_FALSE(alone.empty());
+  EXPECT_EQ(alone.back(), 497 + 16 + 32);
+  EXPECT_EQ(with.front(), 497);
+  EXPECT_EQ(std::count(alone.begin(), alone.end(), 497 + 16), 1);
+  EXPECT_EQ(static_cast<int>(alone.size()), 497 - 400 + 2);
 }

@@ -1,13 +1,18 @@
 #include "physics/helper_choice.h"
 
+#include <algorithm>
+
 namespace bullet_sim {
 namespace {
 
-/// Jobs in a window, and how often the way not chosen is tried again.
+/// Jobs in a window, and the windows from one try of the way not chosen to the next.
 constexpr int kWindowJobs = 64;
-constexpr int kProbeEvery = 16;
+constexpr int kFirstGap = 16;
+constexpr int kLongestGap = 128;
 
 }  // namespace
+
+HelperChoice::HelperChoice() : gap_(kFirstGap) {}
 
 void HelperChoice::record(std::chrono::steady_clock::duration took, size_t pieces) {
   took_ += took;
@@ -18,9 +23,12 @@ void HelperChoice::record(std::chrono::steady_clock::duration took, size_t piece
   jobs_ = 0;
   pieces_ = 0;
   took_ = std::chrono::steady_clock::duration::zero();
-  ++windows_;
   const bool better_with_helpers = alone_ < 0 || (with_helpers_ >= 0 && with_helpers_ < alone_);
-  helpers_now_ = (windows_ % kProbeEvery == 1) ? !better_with_helpers : better_with_helpers;
+  if (trying_) gap_ = helpers_now_ == better_with_helpers ? kFirstGap : std::min(2 * gap_, kLongestGap);
+  // The way never tried yet is tried at once.
+  trying_ = alone_ < 0 || ++since_try_ >= gap_;
+  if (trying_) since_try_ = 0;
+  helpers_now_ = trying_ ? !better_with_helpers : better_with_helpers;
 }
 
 }  // namespace bullet_sim
