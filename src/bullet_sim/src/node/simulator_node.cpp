@@ -70,7 +70,7 @@ void SimulatorNode::spinOnce(ros::CallbackQueue& callbacks) {
     pacer_.restart(sim_->timeS());
   } else {
     callbacks.callAvailable();
-    runner_->stepRound();
+    runner_->step(pacer_.stepsDue(sim_->timeS(), sim_->physicsStepS(), runner_->roundSteps()));
     pacer_.waitUntil(sim_->timeS());
   }
   status_->maybeReport();

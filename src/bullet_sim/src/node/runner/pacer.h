@@ -17,6 +17,11 @@ class Pacer {
   double realTimeFactor() const { return real_time_factor_; }
   /// Returns when the wall clock has reached the moment that matches `sim_time_s`.
   void waitUntil(double sim_time_s);
+  /// How many steps of `step_s` to take at once from `sim_time_s`: 1 while the simulation
+  /// keeps up with the wall clock (a step, then a wait, as Gazebo paces its world), as many
+  /// as sim time is behind it when it does not, and `max_steps` when nothing paces it (a
+  /// real-time factor of 0). Between 1 and max_steps (>= 1).
+  unsigned stepsDue(double sim_time_s, double step_s, unsigned max_steps) const;
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -16,9 +16,10 @@ namespace {
 // nodes that sleep on sim time, and cheap when the simulation runs 100x real time.
 constexpr std::chrono::milliseconds kClockWallPeriod{1};
 
-// The longest stretch of sim time stepped between two looks at the node's callbacks: a
-// Burger's IMU (200 Hz) ends every round sooner. Gazebo's diff drive reads its command at
-// its update rate (30 Hz for a Burger), so a command waiting up to this is unseen.
+// The longest stretch of sim time stepped between two looks at the node's callbacks, when
+// the node runs behind the wall clock or unpaced: a Burger's IMU (200 Hz) ends every round
+// sooner. Gazebo's diff drive reads its command at its update rate (30 Hz for a Burger), so
+// a command waiting up to this is unseen.
 constexpr double kRoundS = 0.005;
 
 }  // namespace
@@ -76,9 +77,9 @@ const bullet_sim::Pose3& SimRunner::spawnPose(const std::string& name) const {
   return spawn_poses_.at(name);
 }
 
-unsigned SimRunner::stepRound() {
+unsigned SimRunner::roundSteps() const {
   const double steps = std::floor(kRoundS / sim_.physicsStepS() + 1e-9);
-  return step(steps >= 1 ? static_cast<unsigned>(steps) : 1u);
+  return steps >= 1 ? static_cast<unsigned>(steps) : 1u;
 }
 
 unsigned SimRunner::step(unsigned max_steps) {

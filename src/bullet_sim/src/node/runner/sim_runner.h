@@ -40,9 +40,9 @@ class SimRunner {
   /// most (Simulation::stepToNextReading), and publishes /clock and every due, subscribed
   /// sensor. Returns the steps taken.
   unsigned step(unsigned max_steps);
-  /// step() of at most a round: kRoundS of sim time. Commands and service calls take
-  /// effect between rounds.
-  unsigned stepRound();
+  /// The most steps the node takes at once (kRoundS of sim time): commands and service
+  /// calls take effect between them.
+  unsigned roundSteps() const;
   /// Logs, once each, what the simulation noticed while building models.
   void logSimulationWarnings();
   /// Publishes the current sim time on /clock.
