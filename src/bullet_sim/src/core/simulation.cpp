@@ -149,7 +149,9 @@ void Simulation::Impl::beforeStep(Robot& r, uint64_t k) {
     r.drive->setCommand(0, 0);
     r.command_active = false;
   }
-  if (r.drive && r.schedule.driveDue(k, dt)) r.drive->updateMotors(r.physics.get(), timeAtStep(k - 1), dt);
+  if (r.drive && r.schedule.driveDue(k, dt)) {
+    r.drive->updateMotors(r.physics.get(), timeAtStep(k - 1), dt);
+  }
   r.physics->applyMotors(dt);
 }
 
@@ -176,13 +178,17 @@ std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps) {
   const bool forces = impl.forces.wrenchCount() > 0 || impl.forces.effortCount() > 0;
   const unsigned n = forces ? 1 : impl.stepsToReading(first, std::max(1u, max_steps));
   RobotStepHooks hooks;
-  hooks.before = [&impl, first](int id, unsigned j) { impl.beforeStep(*impl.by_id[id], first + j); };
+  hooks.before = [&impl, first](int id, unsigned j) {
+    impl.beforeStep(*impl.by_id[id], first + j);
+  };
   hooks.after = [&impl](int id, unsigned) { impl.afterStep(*impl.by_id[id]); };
   impl.applyExternalForces();
   impl.physics->step(impl.cfg.physics_step_s, n, hooks);
   impl.steps = first + n - 1;
   std::vector<DueSensor> due;
-  for (auto& entry : impl.robots) entry.second->schedule.collectDue(impl.steps, impl.cfg.physics_step_s, &due);
+  for (auto& entry : impl.robots) {
+    entry.second->schedule.collectDue(impl.steps, impl.cfg.physics_step_s, &due);
+  }
   return due;
 }
 

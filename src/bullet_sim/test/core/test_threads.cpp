@@ -409,7 +409,8 @@ TEST(Threads, ScansThatWalkTheBroadphaseAreReadTogetherAsOneByOne) {
 
 TEST(Threads, ReadRaysRefusesASensorNamedTwice) {
   const auto sim = twoBurgersApart();
-  const std::vector<DueSensor> twice = {{"looker", SensorKind::Ray, 0}, {"looker", SensorKind::Ray, 0}};
+  const std::vector<DueSensor> twice = {{"looker", SensorKind::Ray, 0},
+                                        {"looker", SensorKind::Ray, 0}};
   EXPECT_THROW(sim->readRays(twice), std::invalid_argument);
 }
 

@@ -24,7 +24,9 @@ void HelperChoice::record(std::chrono::steady_clock::duration took, size_t piece
   pieces_ = 0;
   took_ = std::chrono::steady_clock::duration::zero();
   const bool better_with_helpers = alone_ < 0 || (with_helpers_ >= 0 && with_helpers_ < alone_);
-  if (trying_) gap_ = helpers_now_ == better_with_helpers ? kFirstGap : std::min(2 * gap_, kLongestGap);
+  if (trying_) {  // the way tried won: tried again soon; it lost: later
+    gap_ = helpers_now_ == better_with_helpers ? kFirstGap : std::min(2 * gap_, kLongestGap);
+  }
   // The way never tried yet is tried at once.
   trying_ = alone_ < 0 || ++since_try_ >= gap_;
   if (trying_) since_try_ = 0;

@@ -35,7 +35,8 @@ unsigned Pacer::stepsDue(double sim_time_s, double step_s, unsigned max_steps) c
   if (real_time_factor_ <= 0) return max_steps;
   if (sim_time_s < last_sim_s_) return 1;  // a reset: waitUntil() anchors anew
   const double wall_s = std::chrono::duration<double>(Clock::now() - anchor_wall_).count();
-  const double behind = std::floor((anchor_sim_s_ + wall_s * real_time_factor_ - sim_time_s) / step_s);
+  const double allowed_s = anchor_sim_s_ + wall_s * real_time_factor_;
+  const double behind = std::floor((allowed_s - sim_time_s) / step_s);
   if (!(behind >= 1)) return 1;  // keeping up
   return behind >= max_steps ? max_steps : static_cast<unsigned>(behind);
 }

@@ -109,7 +109,9 @@ unsigned SimRunner::step(unsigned max_steps) {
   }
   if (!scans_due.empty()) {
     const std::vector<bullet_sim::LaserScanData> scans = sim_.readRays(scans_due);
-    for (size_t i = 0; i < scans.size(); ++i) scan_ios[i]->publishScan(scans_due[i].index, scans[i]);
+    for (size_t i = 0; i < scans.size(); ++i) {
+      scan_ios[i]->publishScan(scans_due[i].index, scans[i]);
+    }
   }
   state_topics_.update();
   logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
