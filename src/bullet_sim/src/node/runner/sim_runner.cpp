@@ -115,7 +115,9 @@ unsigned SimRunner::step(unsigned max_steps) {
   }
   state_topics_.update();
   logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
-  return static_cast<unsigned>(std::lround((sim_.timeS() - before_s) / sim_.physicsStepS()));
+  // At least one: a caller counting steps always gets on.
+  const long taken = std::lround((sim_.timeS() - before_s) / sim_.physicsStepS());
+  return taken >= 1 ? static_cast<unsigned>(taken) : 1u;
 }
 
 void SimRunner::logSimulationWarnings() {
