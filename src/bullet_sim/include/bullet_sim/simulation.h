@@ -71,8 +71,9 @@ class Simulation {
   /// `max_steps` without one). The same as step() called as often, except that robots are
   /// grouped into worlds once for all of them (robots that may touch within them share a
   /// world), so that each world takes them on one thread without waiting for the others.
-  /// While an external wrench or effort is set it takes one step.
-  std::vector<DueSensor> stepToNextReading(unsigned max_steps);
+  /// While an external wrench or effort is set it takes one step. With `taken`, says how
+  /// many steps it took.
+  std::vector<DueSensor> stepToNextReading(unsigned max_steps, unsigned* taken = nullptr);
   double timeS() const;
   /// The threads that step the physics (SimConfig::threads, 0 resolved).
   unsigned threads() const;

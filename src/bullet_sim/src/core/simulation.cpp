@@ -171,7 +171,7 @@ unsigned Simulation::Impl::stepsToReading(uint64_t first, unsigned max_steps) co
 
 std::vector<DueSensor> Simulation::step() { return stepToNextReading(1); }
 
-std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps) {
+std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps, unsigned* taken) {
   Impl& impl = *impl_;
   const uint64_t first = impl.steps + 1;
   // External forces come and go with sim time: a step at a time while any is set.
@@ -185,6 +185,7 @@ std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps) {
   impl.applyExternalForces();
   impl.physics->step(impl.cfg.physics_step_s, n, hooks);
   impl.steps = first + n - 1;
+  if (taken) *taken = n;
   std::vector<DueSensor> due;
   for (auto& entry : impl.robots) {
     entry.second->schedule.collectDue(impl.steps, impl.cfg.physics_step_s, &due);

@@ -204,10 +204,13 @@ TEST(Rounds, EachEndsWithTheFirstStepAtWhichASensorIsDue) {
 
 TEST(Rounds, EndAtTheirLengthWhenNoSensorIsDueAndTakeOneStepAtLeast) {
   Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
-  EXPECT_TRUE(sim.stepToNextReading(7).empty());
+  unsigned taken = 0;
+  EXPECT_TRUE(sim.stepToNextReading(7, &taken).empty());
   EXPECT_EQ(millis(sim), 7);
-  sim.stepToNextReading(0);
+  EXPECT_EQ(taken, 7u);
+  sim.stepToNextReading(0, &taken);
   EXPECT_EQ(millis(sim), 8);
+  EXPECT_EQ(taken, 1u);
   sim.spawnRobot("tb3", blindBurger(), poseAt(0, 0, 0));
   EXPECT_TRUE(sim.stepToNextReading(20).empty());
   EXPECT_EQ(millis(sim), 28);

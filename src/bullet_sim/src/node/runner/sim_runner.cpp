@@ -85,8 +85,8 @@ unsigned SimRunner::roundSteps() const {
 unsigned SimRunner::step(unsigned max_steps) {
   // The step's messages wake the publishing thread once, when they are all queued.
   const PublishQueue::Batch batch(queue_);
-  const double before_s = sim_.timeS();
-  const std::vector<bullet_sim::DueSensor> due = sim_.stepToNextReading(max_steps);
+  unsigned taken = 0;
+  const std::vector<bullet_sim::DueSensor> due = sim_.stepToNextReading(max_steps, &taken);
   const auto now = std::chrono::steady_clock::now();
   // A reading stamped t goes out after the clock says t, so no listener sees the future.
   if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
@@ -115,9 +115,7 @@ unsigned SimRunner::step(unsigned max_steps) {
   }
   state_topics_.update();
   logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
-  // At least one: a caller counting steps always gets on.
-  const long taken = std::lround((sim_.timeS() - before_s) / sim_.physicsStepS());
-  return taken >= 1 ? static_cast<unsigned>(taken) : 1u;
+  return taken;
 }
 
 void SimRunner::logSimulationWarnings() {
