@@ -12,33 +12,73 @@
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 
+#include <malloc.h>
+
 #include <future>
 #include <memory>
 #include <string>
+#include <thread>
 
 namespace {
 
 using bullet_sim_node::Config;
 using bullet_sim_node::SimulatorNode;
 
-/// Starts loading the world file named on the command line on a thread of its own, so
-/// that libsdformat parses it while roscpp starts (its XML-RPC server, /rosout, the
-/// parameters); no future when the command line names none.
-std::future<bullet_sim::WorldSpec> preloadWorld(const std::string& world_file) {
-  if (world_file.empty()) return {};
-  return std::async(std::launch::async,
-                    [world_file] { return bullet_sim::loadWorldFile(world_file); });
-}
+/// The world file named on the command line, loaded on a thread of its own so that
+/// libsdformat parses it while roscpp starts (its XML-RPC server, /rosout, the parameters).
+/// The spec is handed over as soon as it is read; the thread then frees the parser's
+/// documents while the simulator starts, and gives the memory back. glibc's fastbins are off
+/// meanwhile: libsdformat allocates and frees a great many small pieces, and without
+/// fastbins glibc does not stop to consolidate them (the load takes a seventh less CPU).
+class WorldPreload {
+ public:
+  explicit WorldPreload(const std::string& world_file) : file_(world_file) {
+    if (file_.empty()) return;
+    spec_ = promise_.get_future();
+    mallopt(M_MXFAST, 0);
+    thread_ = std::thread([this] { load(); });
+  }
+  ~WorldPreload() {
+    if (thread_.joinable()) thread_.join();
+  }
+  WorldPreload(const WorldPreload&) = delete;
+  WorldPreload& operator=(const WorldPreload&) = delete;
 
-/// The simulator, with the world preloaded from `preloaded_file` when it is the one
+  const std::string& file() const { return file_; }
+  /// Valid until get() is called, when a file was named.
+  std::future<bullet_sim::WorldSpec>& spec() { return spec_; }
+
+ private:
+  void load() {
+    std::shared_ptr<const void> documents;
+    try {
+      promise_.set_value(bullet_sim::loadWorldFile(
+          file_, bullet_sim::UriResolver(bullet_sim::ResourcePaths::fromEnvironment()),
+          &documents));
+    } catch (...) {
+      promise_.set_exception(std::current_exception());
+    }
+    documents.reset();
+    mallopt(M_MXFAST, kGlibcDefaultMaxFast);
+    malloc_trim(0);  // what the documents held goes back to the system, as after a spawn
+  }
+
+  /// glibc's default M_MXFAST: 64 * sizeof(size_t) / 4 bytes.
+  static constexpr int kGlibcDefaultMaxFast = 64 * sizeof(size_t) / 4;
+
+  std::string file_;
+  std::promise<bullet_sim::WorldSpec> promise_;
+  std::future<bullet_sim::WorldSpec> spec_;
+  std::thread thread_;
+};
+
+/// The simulator, with the preloaded world when its file is the one
 /// ~world_file names.
-std::unique_ptr<SimulatorNode> startSimulator(const Config& config,
-                                              const std::string& preloaded_file,
-                                              std::future<bullet_sim::WorldSpec>* preloaded,
+std::unique_ptr<SimulatorNode> startSimulator(const Config& config, WorldPreload* preload,
                                               const ros::NodeHandle& nh,
                                               const ros::NodeHandle& gazebo_nh) {
-  if (preloaded->valid() && config.world_file == preloaded_file) {
-    return std::make_unique<SimulatorNode>(config, preloaded->get(), nh, gazebo_nh);
+  if (preload->spec().valid() && config.world_file == preload->file()) {
+    return std::make_unique<SimulatorNode>(config, preload->spec().get(), nh, gazebo_nh);
   }
   return std::make_unique<SimulatorNode>(config, nh, gazebo_nh);
 }
@@ -47,15 +87,14 @@ std::unique_ptr<SimulatorNode> startSimulator(const Config& config,
 
 int main(int argc, char** argv) {
   bullet_sim_node::collectExportedModelPaths();
-  const std::string world_file = bullet_sim_node::commandLineWorldFile(argc, argv);
-  std::future<bullet_sim::WorldSpec> world = preloadWorld(world_file);
+  WorldPreload preload(bullet_sim_node::commandLineWorldFile(argc, argv));
   ros::init(argc, argv, "bullet_sim");
   ros::NodeHandle nh;  // outlives the messages below: its end shuts roscpp's console down
   try {
     const Config config = bullet_sim_node::readConfig(nh, ros::NodeHandle("~"));
     const ros::NodeHandle gazebo_nh("/gazebo");
     const std::unique_ptr<SimulatorNode> simulator =
-        startSimulator(config, world_file, &world, nh, gazebo_nh);
+        startSimulator(config, &preload, nh, gazebo_nh);
     ros::CallbackQueue& callbacks = *ros::getGlobalCallbackQueue();
     while (ros::ok()) simulator->spinOnce(callbacks);
     return 0;

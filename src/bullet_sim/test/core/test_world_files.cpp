@@ -11,6 +11,7 @@
 #include "bullet_sim/simulation.h"
 #include "burger.h"
 #include "load_errors.h"
+#include "round_track.h"
 #include "temp_dir.h"
 
 using namespace bullet_sim;
@@ -315,4 +316,59 @@ TEST(RobotMaterials, GazeboReferenceMaterialColoursTheLinksVisuals) {
   ASSERT_EQ(spec.warnings.size(), 1u);
   EXPECT_EQ(spec.warnings[0], "<gazebo reference=\"tip\"> <material>: 'Custom/Chrome' is not one "
                               "of Gazebo's stock materials: drawn grey");
+}
+
+// ------------------------------------------------------ handed-over documents ----
+
+// The documents a load hands over are freed before the spec is used: the walls are still
+// where DESIGN.md's table puts them, and the spec is the one a plain load gives.
+TEST(WorldDocuments, AWorldOutlivesTheDocumentsItWasReadFrom) {
+  const UriResolver resolver(ResourcePaths::fromEnvironment());
+  std::shared_ptr<const void> documents;
+  const WorldSpec world = loadWorldFile(bullet_sim_test::roundTrackPath(), resolver, &documents);
+  EXPECT_NE(documents, nullptr);
+  EXPECT_EQ(documents.use_count(), 1);
+  documents.reset();
+  const auto& walls = bullet_sim_test::roundTrackWalls();
+  for (size_t i = 0; i < walls.size(); ++i) {
+    const std::string name = (i < 10 ? "wall_0" : "wall_") + std::to_string(i);
+    SCOPED_TRACE(name);
+    const StaticShape* wall = shapeOf(world, name);
+    ASSERT_NE(wall, nullptr);
+    EXPECT_EQ(wall->kind, Geometry::Box);
+    EXPECT_NEAR(wall->size.x(), bullet_sim_test::kWallThicknessM, 1e-9);
+    EXPECT_NEAR(wall->size.y(), walls[i].length, 1e-9);
+    EXPECT_NEAR(wall->size.z(), bullet_sim_test::kWallHeightM, 1e-9);
+    EXPECT_NEAR(wall->pose.position.x(), walls[i].x, 1e-9);
+    EXPECT_NEAR(wall->pose.position.y(), walls[i].y, 1e-9);
+    EXPECT_NEAR(wall->pose.position.z(), 0.5 * bullet_sim_test::kWallHeightM, 1e-9);
+    EXPECT_NEAR(std::remainder(yawOf(wall->pose) - walls[i].yaw, 2 * M_PI), 0.0, 1e-9);
+  }
+  const WorldSpec plain = loadWorldFile(bullet_sim_test::roundTrackPath(), resolver);
+  EXPECT_EQ(world.name, plain.name);
+  ASSERT_EQ(world.shapes.size(), plain.shapes.size());
+  for (size_t i = 0; i < plain.shapes.size(); ++i) {
+    const StaticShape& a = world.shapes[i];
+    const StaticShape& b = plain.shapes[i];
+    SCOPED_TRACE(b.model + " " + b.link);
+    EXPECT_EQ(a.model, b.model);
+    EXPECT_EQ(a.link, b.link);
+    EXPECT_EQ(a.kind, b.kind);
+    EXPECT_EQ(a.size, b.size);
+    EXPECT_EQ(a.pose.position, b.pose.position);
+    EXPECT_EQ(a.pose.orientation.coeffs(), b.pose.orientation.coeffs());
+    EXPECT_EQ(a.rgba, b.rgba);
+    EXPECT_EQ(a.collides, b.collides);
+  }
+  EXPECT_EQ(world.static_models.size(), plain.static_models.size());
+  EXPECT_EQ(world.warnings, plain.warnings);
+}
+
+TEST(WorldDocuments, NoneAreHandedOverWhenTheWorldCannotBeLoaded) {
+  TempDir dir;
+  const std::string path =
+      dir.write("broken.world", "<sdf version='1.6'><world name='w'><model name='m'>");
+  std::shared_ptr<const void> documents;
+  EXPECT_THROW(loadWorldFile(path, kNoPaths, &documents), LoadError);
+  EXPECT_EQ(documents, nullptr);
 }

@@ -30,13 +30,16 @@ class WorldReader {
       : source_(std::move(source)), resolver_(resolver), shapes_(source_, resolver) {}
 
   /// Reads the <state> first: its poses are checked with messages that name the value.
-  WorldSpec read(const std::string& text, const std::string& path) {
-    const auto xml = parseSdfXml(text, source_, "world");
+  /// With `documents`, the XML and libsdformat documents the world was read from go there
+  /// instead of being freed before the spec is returned.
+  WorldSpec read(const std::string& text, const std::string& path,
+                 std::shared_ptr<const void>* documents = nullptr) {
+    auto xml = parseSdfXml(text, source_, "world");
     const tinyxml2::XMLElement* sdf_element = xml->FirstChildElement("sdf");
     WorldSpec spec;
     const WorldState state = readWorldState(
         sdf_element ? sdf_element->FirstChildElement("world") : nullptr, source_, &spec.warnings);
-    const auto root = loadSdfRoot(text, source_, path, resolver_, "world", &spec.warnings);
+    auto root = loadSdfRoot(text, source_, path, resolver_, "world", &spec.warnings);
     if (root->WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
     const sdf::World& world = *root->WorldByIndex(0);
     spec.name = world.Name();
@@ -52,10 +55,18 @@ class WorldReader {
     }
     const std::vector<std::string>& mesh_warnings = shapes_.meshWarnings();
     spec.warnings.insert(spec.warnings.end(), mesh_warnings.begin(), mesh_warnings.end());
+    if (documents) {
+      *documents = std::make_shared<Documents>(Documents{std::move(xml), std::move(root)});
+    }
     return spec;
   }
 
  private:
+  struct Documents {
+    std::unique_ptr<tinyxml2::XMLDocument> xml;
+    std::unique_ptr<sdf::Root> root;
+  };
+
   /// Gravity, step size, ambient light and the sun's direction.
   void readSettings(const sdf::World& world, WorldSpec* spec) const {
     const auto g = world.Gravity();
@@ -162,11 +173,16 @@ WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_
 }
 
 WorldSpec loadWorldFile(const std::string& path, const UriResolver& resolver) {
+  return loadWorldFile(path, resolver, nullptr);
+}
+
+WorldSpec loadWorldFile(const std::string& path, const UriResolver& resolver,
+                        std::shared_ptr<const void>* documents) {
   std::ifstream in(path);
   if (!in.good()) throw LoadError(path + ": world file does not exist or cannot be read");
   std::stringstream text;
   text << in.rdbuf();
-  return WorldReader(path, resolver).read(text.str(), path);
+  return WorldReader(path, resolver).read(text.str(), path, documents);
 }
 
 WorldSpec loadWorldString(const std::string& sdf_xml, const std::string& source_name,
