@@ -5,12 +5,23 @@
 // is timed with its depth image and point cloud (both made each frame, as for a subscriber
 // to each).
 //
-// Usage: bullet_sim_camera_bench <robot.urdf> <world.sdf> [sim_seconds]
+// With --cameras N, N robots instead (at most 16, on the round track's west lane, 4 rows of
+// 4 as bullet_sim_bench puts them), on a simulation of --threads T (default 2): their
+// cameras fall due at the same steps, and each time they are rendered both one by one
+// (render()) and together (renderTogether(), on the simulation's threads), alternately
+// first. Prints the median time of each way per time they fall due.
+//
+// Usage: bullet_sim_camera_bench [--cameras N [--threads T]] <robot.urdf> <world.sdf>
+//                                [sim_seconds]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "bullet_sim/errors.h"
@@ -68,18 +79,114 @@ double percentile(std::vector<double> values, double q) {
   return values[static_cast<size_t>(q * static_cast<double>(values.size() - 1))];
 }
 
+/// Milliseconds per time the cameras fell due, rendered one way and the other.
+struct Together {
+  std::vector<double> one_by_one_ms, together_ms;
+  size_t frames = 0;  ///< per time
+};
+
+/// The cameras of `n` copies of `robot`, driving slow weaves, rendered both ways each time
+/// they are due (see the file comment).
+Together runTogether(const bullet_sim::WorldSpec& world, const bullet_sim::RobotSpec& robot,
+                     int n, unsigned threads, double sim_seconds) {
+  bullet_sim::SimConfig cfg;
+  cfg.threads = threads;
+  bullet_sim::Simulation sim(world, cfg);
+  const double xs[4] = {-0.55, -0.25, 0.05, 0.35}, ys[4] = {-1.4, -0.95, 0.3, 0.75};
+  for (int i = 0; i < n; ++i) {
+    bullet_sim::Pose3 spawn;
+    spawn.position = Eigen::Vector3d(xs[i % 4], ys[i / 4], 0);
+    spawn.orientation = Eigen::AngleAxisd((i / 4) % 2 ? -M_PI_2 : M_PI_2, Eigen::Vector3d::UnitZ());
+    sim.spawnRobot("robot" + std::to_string(i), robot, spawn);
+  }
+  bullet_sim::CameraRenderer alone(sim), with_others(sim);
+  std::vector<bullet_sim::ImageData> images(n * robot.cameras.size());
+  std::vector<bullet_sim::DepthImageData> depths(images.size());
+  Together run;
+  while (sim.timeS() < sim_seconds) {
+    for (int i = 0; i < n; ++i) {
+      sim.setCmdVel("robot" + std::to_string(i), 0.05, 0.3 * std::sin(sim.timeS() + i));
+    }
+    std::vector<bullet_sim::CameraFrame> frames;
+    for (const bullet_sim::DueSensor& due : sim.stepToNextReading(5)) {
+      if (due.kind != bullet_sim::SensorKind::Camera) continue;
+      const size_t k = frames.size();
+      const bool depth = robot.cameras[due.index].depth.has_value();
+      frames.push_back({due.robot, due.index, &images[k], depth ? &depths[k] : nullptr, {}});
+    }
+    if (frames.empty()) continue;
+    run.frames = frames.size();
+    const auto oneByOne = [&] {
+      const Clock::time_point start = Clock::now();
+      for (const bullet_sim::CameraFrame& f : frames) {
+        alone.render(f.robot, f.index, f.image, f.depth);
+      }
+      run.one_by_one_ms.push_back(1e3 * secondsSince(start));
+    };
+    const auto together = [&] {
+      const Clock::time_point start = Clock::now();
+      with_others.renderTogether(&frames);
+      run.together_ms.push_back(1e3 * secondsSince(start));
+      for (const bullet_sim::CameraFrame& f : frames) {
+        if (f.error) std::rethrow_exception(f.error);
+      }
+    };
+    if (run.together_ms.size() % 2 == 0) {
+      oneByOne();
+      together();
+    } else {
+      together();
+      oneByOne();
+    }
+  }
+  return run;
+}
+
+int benchTogether(const bullet_sim::RobotSpec& robot, const bullet_sim::WorldSpec& world, int n,
+                  unsigned threads, double sim_seconds) {
+  if (n < 1 || n > 16) throw std::invalid_argument("--cameras: 1 to 16 robots");
+  const Together run = runTogether(world, robot, n, threads, sim_seconds);
+  if (run.together_ms.empty()) throw bullet_sim::LoadError("the cameras were never due");
+  const double one = percentile(run.one_by_one_ms, 0.5), both = percentile(run.together_ms, 0.5);
+  std::printf("%d robots, %zu camera frames due at a time, %zu times in %.1f s sim\n", n,
+              run.frames, run.together_ms.size(), sim_seconds);
+  std::printf("one by one: median %.3f ms (p95 %.3f)\n", one, percentile(run.one_by_one_ms, 0.95));
+  std::printf("together on %u threads: median %.3f ms (p95 %.3f), %.2fx\n", threads, both,
+              percentile(run.together_ms, 0.95), one / both);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3) {
-    std::fprintf(stderr, "usage: %s <robot.urdf> <world.sdf> [sim_seconds]\n", argv[0]);
+  int cameras = 0;
+  unsigned threads = 2;
+  int arg = 1;
+  bool usable = true;
+  for (; arg < argc && std::strncmp(argv[arg], "--", 2) == 0; arg += 2) {
+    const bool valued = arg + 1 < argc && std::atoi(argv[arg + 1]) > 0;
+    if (valued && std::strcmp(argv[arg], "--cameras") == 0) {
+      cameras = std::atoi(argv[arg + 1]);
+    } else if (valued && std::strcmp(argv[arg], "--threads") == 0) {
+      threads = static_cast<unsigned>(std::atoi(argv[arg + 1]));
+    } else {
+      usable = false;
+      break;
+    }
+  }
+  if (!usable || argc - arg < 2) {
+    std::fprintf(stderr,
+                 "usage: %s [--cameras N [--threads T]] <robot.urdf> <world.sdf> [sim_seconds]\n",
+                 argv[0]);
     return 2;
   }
-  const double sim_seconds = argc > 3 ? std::atof(argv[3]) : 20.0;
+  const char* robot_file = argv[arg];
+  const double sim_seconds = argc - arg > 2 ? std::atof(argv[arg + 2]) : 20.0;
   try {
-    const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(argv[1]);
-    const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[2]);
-    if (robot.cameras.empty()) throw bullet_sim::LoadError(std::string(argv[1]) + ": no camera");
+    const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(robot_file);
+    const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[arg + 1]);
+    if (robot.cameras.empty()) throw bullet_sim::LoadError(std::string(robot_file) + ": no camera");
+    if (cameras > 0) return benchTogether(robot, world, cameras, threads, sim_seconds);
     const bullet_sim::CameraSpec& camera = robot.cameras[0];
     const Run plain = runScenario(world, robot, sim_seconds, false);
     const Run with_camera = runScenario(world, robot, sim_seconds, true);

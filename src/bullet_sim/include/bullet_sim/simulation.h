@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -77,6 +78,15 @@ class Simulation {
   double timeS() const;
   /// The threads that step the physics (SimConfig::threads, 0 resolved).
   unsigned threads() const;
+  /// Calls work(i) once for each i in [0, n) on the threads that step the physics and
+  /// returns when all have returned; then rethrows the first exception a piece threw (the
+  /// other pieces run all the same). For work beside the simulation that shares it out
+  /// (CameraRenderer::renderTogether draws one camera frame per piece): the pieces must be
+  /// independent of each other and may read the simulation, not change it. Whether the
+  /// helper threads are used is measured for this work apart from the steps and the scans
+  /// (its pieces cost otherwise), as the steps' is. Call it where step() is called, never
+  /// from inside a piece; the simulation itself is left as it was.
+  void runInParallel(size_t n, const std::function<void(size_t)>& work) const;
   /// Sim time to 0, robots back to their spawn poses at rest, commands zero, external
   /// wrenches and efforts cleared.
   void reset();

@@ -66,6 +66,10 @@ unsigned Simulation::Impl::threadCount(const SimConfig& c) {
 
 unsigned Simulation::threads() const { return impl_->physics->threads(); }
 
+void Simulation::runInParallel(size_t n, const std::function<void(size_t)>& work) const {
+  impl_->physics->runInParallel(n, work);
+}
+
 void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
   const RobotSpec& spec = r->spec;
   for (const RaySpec& s : spec.rays) requireLink(*r->physics, name, "ray sensor '" + s.name + "'", s.link);

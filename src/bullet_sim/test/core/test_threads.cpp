@@ -1,9 +1,11 @@
 // Robots in parallel: the same run to the bit whatever the number of threads, and robots
 // simulated in worlds of their own still push each other and see each other.
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -415,6 +417,26 @@ TEST(Threads, ReadRaysRefusesASensorNamedTwice) {
   const std::vector<DueSensor> twice = {{"looker", SensorKind::Ray, 0},
                                         {"looker", SensorKind::Ray, 0}};
   EXPECT_THROW(sim->readRays(twice), std::invalid_argument);
+}
+
+TEST(Threads, RunInParallelCallsEveryPieceOnceAndRethrowsWhatOneThrewAfterTheOthersRan) {
+  for (unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    SimConfig cfg;
+    cfg.threads = threads;
+    const Simulation sim(bullet_sim_test::flatWorld(), cfg);
+    for (int job = 0; job < 3; ++job) {
+      std::vector<std::atomic<int>> calls(7);
+      sim.runInParallel(calls.size(), [&calls](size_t i) { ++calls[i]; });
+      for (const std::atomic<int>& n : calls) EXPECT_EQ(n.load(), 1);
+    }
+    std::vector<std::atomic<int>> calls(5);
+    EXPECT_THROW(sim.runInParallel(calls.size(), [&calls](size_t i) {
+      ++calls[i];
+      if (i == 1) throw std::runtime_error("piece 1");
+    }), std::runtime_error);
+    for (const std::atomic<int>& n : calls) EXPECT_EQ(n.load(), 1);
+  }
 }
 
 TEST(Threads, RobotsInOneWorldCanBeDeletedAndResetInAnyOrder) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +53,17 @@ void validateCamera(const CameraSpec& camera);
 /// above, which is negative beyond hfov = pi).
 CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 
+/// One frame of CameraRenderer::renderTogether: which camera, where its image goes and, when
+/// it could not be rendered, why.
+struct CameraFrame {
+  std::string robot;
+  size_t index = 0;                   ///< the camera's index in the robot's spec
+  ImageData* image = nullptr;         ///< the frame's image, its buffer reused
+  DepthImageData* depth = nullptr;    ///< a depth camera's depth image, or null for none
+  std::exception_ptr error;           ///< set when the frame was not rendered: what render()
+                                      ///< would have thrown
+};
+
 /// Renders the cameras of a Simulation's robots on the CPU (no display, no GPU).
 ///
 /// The world's shapes are turned into triangles once, at construction; each robot's
@@ -62,8 +74,9 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 /// the one carrying the camera (a camera inside its own housing does not see it: faces are
 /// single-sided). Mesh visuals are drawn part by part, each part in its own material
 /// colour or else the visual's. A wide-angle camera (CameraSpec::lens) is drawn through a
-/// cube map of pinhole faces remapped by its lens (src/core/lens_camera.h).
-/// Not thread-safe.
+/// cube map of pinhole faces remapped by its lens (src/core/lens_camera.h). Frames due at
+/// the same time are drawn together on the simulation's threads (renderTogether).
+/// Not thread-safe: call it where the simulation is stepped.
 class CameraRenderer {
  public:
   /// Keeps a reference to `sim`, which must outlive the renderer.
@@ -80,6 +93,15 @@ class CameraRenderer {
   /// that is not a depth camera.
   void render(const std::string& robot, size_t index, ImageData* image,
               DepthImageData* depth = nullptr);
+
+  /// Renders several cameras as the simulation stands now: the scene's robots are brought
+  /// up to date and posed once, then each frame is drawn with its camera's own buffers, on
+  /// the simulation's threads (Simulation::runInParallel), the scene only read. Each frame
+  /// is the same to the bit as render() gives it alone. A frame that render() would throw
+  /// for gets that exception in its `error` (cleared otherwise), and the other frames are
+  /// rendered all the same. Each frame needs its own image and depth image.
+  /// @throws std::invalid_argument for a camera named twice (nothing is rendered then).
+  void renderTogether(std::vector<CameraFrame>* frames);
 
   /// Visuals that could not be drawn (bad sizes), one message each; meshes that could not
   /// be read are in the robot's and the world's spec warnings instead.

@@ -114,6 +114,10 @@ void PhysicsWorlds::castInParallel(size_t n,
   pool_.run(n, [&cast, &scene](size_t i) { cast(i, scene); }, 1, &scan_choice_);
 }
 
+void PhysicsWorlds::runInParallel(size_t n, const std::function<void(size_t)>& work) {
+  pool_.run(n, work, 1, &other_choice_);
+}
+
 void PhysicsWorlds::setGravity(const Eigen::Vector3d& gravity) {
   gravity_ = gravity;
   for (auto& entry : homes_) entry.second.world->dynamics()->setGravity(toBt(gravity));

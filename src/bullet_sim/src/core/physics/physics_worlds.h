@@ -56,6 +56,9 @@ class PhysicsWorlds {
   /// Calls cast(i, scene) for each i in [0, n) on the pool's threads, with rayWorld() as
   /// the scene: each call must only read it (no broadphase ray walk, see castScan).
   void castInParallel(size_t n, const std::function<void(size_t, btCollisionWorld&)>& cast);
+  /// Calls work(i) for each i in [0, n) on the pool's threads: work beside the physics
+  /// (camera frames), with a HelperChoice of its own.
+  void runInParallel(size_t n, const std::function<void(size_t)>& work);
   void setGravity(const Eigen::Vector3d& gravity);
   unsigned threads() const { return pool_.threads(); }
 
@@ -85,6 +88,7 @@ class PhysicsWorlds {
   RayScene rays_;
   StepPool pool_;
   HelperChoice scan_choice_;  ///< whether scans pay on the helpers, apart from the steps'
+  HelperChoice other_choice_; ///< whether runInParallel's work pays on them
   std::vector<GroupMember> members_;  ///< the attached robots of the last regroup, by id
   std::vector<Home*> member_homes_;   ///< their homes
   std::vector<Busy> busy_;            ///< the worlds stepped in the last round, by host id

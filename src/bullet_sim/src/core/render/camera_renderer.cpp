@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include <sim_render/renderer.h>
 
@@ -118,6 +120,17 @@ void encodeFromRgb(const std::vector<uint8_t>& rgb, int width, ImageData* image)
   image->step = 3 * width;
 }
 
+/// Two frames of one camera would be drawn with the same buffers at once.
+void requireDistinctCameras(const std::vector<CameraFrame>& frames) {
+  std::set<std::pair<std::string, size_t>> named;
+  for (const CameraFrame& frame : frames) {
+    if (!named.insert({frame.robot, frame.index}).second) {
+      throw std::invalid_argument("renderTogether: camera " + std::to_string(frame.index) +
+                                  " of robot '" + frame.robot + "' named twice");
+    }
+  }
+}
+
 }  // namespace
 
 std::string imageEncoding(const CameraSpec& camera) {
@@ -163,12 +176,25 @@ struct CameraRenderer::Impl {
     Eigen::Isometry3d T_link_visual;
     sim_render::ShapeId id = 0;
   };
+  /// What one camera draws with: its own, so that cameras are drawn side by side.
+  struct Camera {
+    std::unique_ptr<sim_render::Renderer> renderer;  ///< made when first drawn
+    std::unique_ptr<LensCamera> lens_camera;         ///< instead, for a wide-angle camera
+    size_t link_hint = 0;
+    std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
+  };
   struct RobotScene {
     int spawn_generation = -1;  ///< tells a respawned robot of the same name apart
     std::vector<Visual> visuals;
-    std::vector<std::unique_ptr<sim_render::Renderer>> renderers;  ///< per camera, lazily
-    std::vector<std::unique_ptr<LensCamera>> lens_cameras;  ///< per wide-angle camera, lazily
-    std::vector<size_t> camera_link_hints;
+    std::vector<Camera> cameras;       ///< by index in the spec
+    std::vector<LinkPose> link_poses;  ///< as poseRobots() last read them
+  };
+  /// A frame that can be drawn, with all it needs read beforehand.
+  struct Draw {
+    CameraFrame* frame;
+    const CameraSpec* camera;
+    Camera* drawer;
+    Eigen::Isometry3d T_world_camera;
   };
 
   explicit Impl(const Simulation& s) : sim(s) {
@@ -189,9 +215,7 @@ struct CameraRenderer::Impl {
 
   void addRobot(const std::string& name, const RobotSpec& spec, RobotScene* robot) {
     robot->spawn_generation = sim.spawnGeneration(name);
-    robot->renderers.resize(spec.cameras.size());
-    robot->lens_cameras.resize(spec.cameras.size());
-    robot->camera_link_hints.assign(spec.cameras.size(), 0);
+    robot->cameras.resize(spec.cameras.size());
     for (const VisualSpec& v : spec.visuals) {
       const Eigen::Isometry3d T_link_visual = toIsometry(v.pose_in_link);
       for (const sim_render::ShapeSpec& shape : shapesOf(v, v.mesh, v.rgba, v.texture, &sources)) {
@@ -235,46 +259,66 @@ struct CameraRenderer::Impl {
     }
   }
 
-  /// Moves every robot's visuals to their links' current poses.
-  void poseRobots(const std::string& camera_robot) {
+  /// Moves every robot's visuals to their links' current poses, which it keeps.
+  void poseRobots() {
     for (auto& [name, robot] : robots) {
-      std::vector<LinkPose>& poses = name == camera_robot ? camera_robot_poses : other_poses;
-      poses = sim.linkPoses(name);
+      robot.link_poses = sim.linkPoses(name);
       for (Visual& v : robot.visuals) {
-        const Pose3* link = findLink(poses, v.link, &v.link_hint);
+        const Pose3* link = findLink(robot.link_poses, v.link, &v.link_hint);
         if (link) scene.setPose(v.id, toIsometry(*link) * v.T_link_visual);
       }
     }
   }
 
-  /// Makes camera `index`'s renderer (or lens camera) the first time it is drawn.
-  static void prepareCamera(const CameraSpec& camera, size_t index, RobotScene* robot) {
-    std::unique_ptr<sim_render::Renderer>& renderer = robot->renderers[index];
-    std::unique_ptr<LensCamera>& lens_camera = robot->lens_cameras[index];
-    if (renderer || lens_camera) return;
+  /// Makes `camera`'s renderer (or lens camera) the first time it is drawn.
+  static void prepareCamera(const CameraSpec& camera, Camera* drawer) {
+    if (drawer->renderer || drawer->lens_camera) return;
     validateCamera(camera);
     if (camera.lens) {
-      lens_camera = std::make_unique<LensCamera>(camera);
+      drawer->lens_camera = std::make_unique<LensCamera>(camera);
     } else {
-      renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
+      drawer->renderer = std::make_unique<sim_render::Renderer>(cameraModel(camera));
     }
   }
 
   /// World pose of `camera` on robot `robot`, whose links poseRobots() has just read.
-  Eigen::Isometry3d cameraPose(const std::string& robot, const CameraSpec& camera,
-                               size_t* link_hint) const {
-    const Pose3* link = findLink(camera_robot_poses, camera.link, link_hint);
+  static Eigen::Isometry3d cameraPose(const std::string& robot, const RobotScene& scene_robot,
+                                      const CameraSpec& camera, size_t* link_hint) {
+    const Pose3* link = findLink(scene_robot.link_poses, camera.link, link_hint);
     if (!link) throw LoadError(cameraName(camera) + " of robot '" + robot + "': no such link");
     return toIsometry(*link) * toIsometry(camera.pose_in_link);
   }
 
-  /// Renders camera `index` of `robot` from T_world_camera into `rgb`.
-  void draw(RobotScene& robot, size_t index, const Eigen::Isometry3d& T_world_camera,
-            std::vector<uint8_t>* rgb) {
-    if (robot.lens_cameras[index]) {
-      robot.lens_cameras[index]->render(scene, T_world_camera, *rgb);
+  /// Everything `frame` needs to be drawn, its image's header set; after syncRobots() and
+  /// poseRobots(). @throws what render() throws for the frame.
+  Draw prepare(CameraFrame* frame) {
+    const CameraSpec& camera = cameraToRender(sim.robotSpec(frame->robot), frame->robot,
+                                               frame->index, frame->depth != nullptr);
+    RobotScene& robot = robots.at(frame->robot);
+    Camera& drawer = robot.cameras.at(frame->index);
+    prepareCamera(camera, &drawer);
+    const Eigen::Isometry3d T_world_camera =
+        cameraPose(frame->robot, robot, camera, &drawer.link_hint);
+    setImageHeader(camera, sim.timeS(), frame->image);
+    return {frame, &camera, &drawer, T_world_camera};
+  }
+
+  /// Draws a prepared frame; reads the scene and writes only the frame's and its camera's
+  /// buffers, so that frames of different cameras are drawn side by side.
+  static void draw(const sim_render::Scene& scene, const Draw& d) {
+    ImageData* image = d.frame->image;
+    const bool rgb8 = image->encoding == "rgb8";
+    std::vector<uint8_t>& rgb = rgb8 ? image->data : d.drawer->rgb;
+    if (d.drawer->lens_camera) {
+      d.drawer->lens_camera->render(scene, d.T_world_camera, rgb);
     } else {
-      robot.renderers[index]->render(scene, T_world_camera, *rgb);
+      d.drawer->renderer->render(scene, d.T_world_camera, rgb);
+    }
+    if (d.frame->depth) readDepth(*d.drawer->renderer, *d.camera, image->time_s, d.frame->depth);
+    if (rgb8) {
+      image->step = 3 * d.camera->width;
+    } else {
+      encodeFromRgb(d.drawer->rgb, d.camera->width, image);
     }
   }
 
@@ -283,8 +327,6 @@ struct CameraRenderer::Impl {
   std::map<std::string, RobotScene> robots;
   std::vector<std::string> warnings;
   ShapeSources sources{MeshTriangles(), TextureImages(&warnings), {}};
-  std::vector<LinkPose> camera_robot_poses, other_poses;
-  std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
 };
 
 CameraRenderer::CameraRenderer(const Simulation& sim) : impl_(std::make_unique<Impl>(sim)) {}
@@ -295,24 +337,37 @@ const std::vector<std::string>& CameraRenderer::warnings() const { return impl_-
 
 void CameraRenderer::render(const std::string& robot, size_t index, ImageData* image,
                             DepthImageData* depth) {
-  const CameraSpec& camera = cameraToRender(impl_->sim.robotSpec(robot), robot, index,
-                                             depth != nullptr);
+  std::vector<CameraFrame> frames(1);
+  frames[0].robot = robot;
+  frames[0].index = index;
+  frames[0].image = image;
+  frames[0].depth = depth;
+  renderTogether(&frames);
+  if (frames[0].error) std::rethrow_exception(frames[0].error);
+}
+
+void CameraRenderer::renderTogether(std::vector<CameraFrame>* frames) {
+  requireDistinctCameras(*frames);
   impl_->syncRobots();
-  Impl::RobotScene& scene_robot = impl_->robots.at(robot);
-  impl_->prepareCamera(camera, index, &scene_robot);
-  impl_->poseRobots(robot);
-  const Eigen::Isometry3d T_world_camera =
-      impl_->cameraPose(robot, camera, &scene_robot.camera_link_hints[index]);
-  setImageHeader(camera, impl_->sim.timeS(), image);
-  const bool rgb8 = image->encoding == "rgb8";
-  std::vector<uint8_t>& rgb = rgb8 ? image->data : impl_->rgb;
-  impl_->draw(scene_robot, index, T_world_camera, &rgb);
-  if (depth) readDepth(*scene_robot.renderers[index], camera, image->time_s, depth);
-  if (rgb8) {
-    image->step = 3 * camera.width;
-  } else {
-    encodeFromRgb(impl_->rgb, camera.width, image);
+  impl_->poseRobots();
+  std::vector<Impl::Draw> draws;
+  draws.reserve(frames->size());
+  for (CameraFrame& frame : *frames) {
+    frame.error = nullptr;
+    try {
+      draws.push_back(impl_->prepare(&frame));
+    } catch (...) {
+      frame.error = std::current_exception();
+    }
   }
+  const sim_render::Scene& scene = impl_->scene;
+  impl_->sim.runInParallel(draws.size(), [&scene, &draws](size_t i) {
+    try {
+      Impl::draw(scene, draws[i]);
+    } catch (...) {
+      draws[i].frame->error = std::current_exception();
+    }
+  });
 }
 
 }  // namespace bullet_sim

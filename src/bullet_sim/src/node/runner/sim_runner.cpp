@@ -90,12 +90,13 @@ unsigned SimRunner::step(unsigned max_steps) {
   const auto now = std::chrono::steady_clock::now();
   // A reading stamped t goes out after the clock says t, so no listener sees the future.
   if (!due.empty() || now - last_clock_wall_ >= kClockWallPeriod) publishClock();
-  // The wanted scans are cast together, on the physics threads.
-  std::vector<bullet_sim::DueSensor> scans_due;
+  // The wanted scans are cast together, and the cameras' frames rendered together, on the
+  // physics threads.
+  std::vector<bullet_sim::DueSensor> scans_due, cameras_due;
   std::vector<RobotIo*> scan_ios;
   for (const bullet_sim::DueSensor& sensor : due) {
     if (sensor.kind == bullet_sim::SensorKind::Camera) {
-      cameras_.publish(sensor);
+      cameras_due.push_back(sensor);
       continue;
     }
     const auto robot = robots_.find(sensor.robot);
@@ -107,6 +108,7 @@ unsigned SimRunner::step(unsigned max_steps) {
       scan_ios.push_back(robot->second.get());
     }
   }
+  if (!cameras_due.empty()) cameras_.publish(cameras_due);
   if (!scans_due.empty()) {
     const std::vector<bullet_sim::LaserScanData> scans = sim_.readRays(scans_due);
     for (size_t i = 0; i < scans.size(); ++i) {

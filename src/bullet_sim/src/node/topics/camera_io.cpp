@@ -89,38 +89,66 @@ void CameraIo::removeRobot(const std::string& robot) {
   depth_.removeRobot(robot);
 }
 
-void CameraIo::publish(const bullet_sim::DueSensor& due) {
+void CameraIo::publish(const std::vector<bullet_sim::DueSensor>& due) {
+  std::vector<Watched> cameras;
+  cameras.reserve(due.size());
+  for (const bullet_sim::DueSensor& sensor : due) {
+    if (std::optional<Watched> camera = watched(sensor)) cameras.push_back(std::move(*camera));
+  }
+  // Frames are rendered for the image and depth topics; camera_info needs none.
+  std::vector<bullet_sim::CameraFrame> frames;
+  std::vector<Watched*> rendered;
+  for (Watched& camera : cameras) {
+    if (!camera.image_wanted && !camera.depth_wanted) continue;
+    frames.push_back({camera.due->robot, camera.due->index, &camera.image,
+                      camera.depth_wanted ? &camera.depth : nullptr, nullptr});
+    rendered.push_back(&camera);
+  }
+  if (!frames.empty()) {
+    renderer_.renderTogether(&frames);
+    for (size_t i = 0; i < frames.size(); ++i) rendered[i]->render_error = frames[i].error;
+  }
+  for (Watched& camera : cameras) publish(&camera);
+  logNewRendererWarnings();
+}
+
+std::optional<CameraIo::Watched> CameraIo::watched(const bullet_sim::DueSensor& due) {
   const auto robot = cameras_.find(due.robot);
-  if (robot == cameras_.end() || due.index >= robot->second.size()) return;
+  if (robot == cameras_.end() || due.index >= robot->second.size()) return std::nullopt;
   Topics& topics = robot->second[due.index];
-  const bool image_wanted = topics.image.hasSubscribers();
-  const bool info_wanted = topics.info.hasSubscribers();
-  const bool depth_wanted = depth_.depthWanted(due.robot, due.index);
-  if (!image_wanted && !info_wanted && !depth_wanted && !depth_.infoWanted(due.robot, due.index)) {
-    return;
+  Watched camera{&due, &topics, &sim_.robotSpec(due.robot).cameras.at(due.index),
+                 topics.image.hasSubscribers(), topics.info.hasSubscribers(),
+                 depth_.depthWanted(due.robot, due.index), {}, {}, nullptr};
+  if (!camera.image_wanted && !camera.info_wanted && !camera.depth_wanted &&
+      !depth_.infoWanted(due.robot, due.index)) {
+    return std::nullopt;
   }
-  const bullet_sim::CameraSpec& camera = sim_.robotSpec(due.robot).cameras.at(due.index);
-  if (info_wanted) {
+  return camera;
+}
+
+void CameraIo::publish(Watched* camera) {
+  const bullet_sim::DueSensor& due = *camera->due;
+  Topics& topics = *camera->topics;
+  if (camera->info_wanted) {
     queue_.publish(topics.info.publisher(),
-                   toMsg(bullet_sim::cameraInfo(camera, sim_.timeS()), topics.frame_id));
+                   toMsg(bullet_sim::cameraInfo(*camera->camera, sim_.timeS()), topics.frame_id));
   }
-  depth_.publishInfo(due.robot, due.index, camera, sim_.timeS());
-  if (!image_wanted && !depth_wanted) return;
+  depth_.publishInfo(due.robot, due.index, *camera->camera, sim_.timeS());
+  if (!camera->image_wanted && !camera->depth_wanted) return;
   try {
-    bullet_sim::ImageData frame;
-    bullet_sim::DepthImageData depth;
-    renderer_.render(due.robot, due.index, &frame, depth_wanted ? &depth : nullptr);
+    if (camera->render_error) std::rethrow_exception(camera->render_error);
     // The cloud takes its colours from the frame before the image message takes its bytes.
-    if (depth_wanted) depth_.publish(due.robot, due.index, camera, &depth, frame);
-    if (!image_wanted) return;
-    sensor_msgs::ImagePtr image = toMsg(&frame);
+    if (camera->depth_wanted) {
+      depth_.publish(due.robot, due.index, *camera->camera, &camera->depth, camera->image);
+    }
+    if (!camera->image_wanted) return;
+    sensor_msgs::ImagePtr image = toMsg(&camera->image);
     image->header.frame_id = topics.frame_id;
     queue_.publish(topics.image.publisher(), std::move(image));
   } catch (const std::exception& error) {
     ROS_ERROR_THROTTLE(5.0, "robot %s: camera '%s' not rendered: %s", due.robot.c_str(),
-                       camera.name.c_str(), error.what());
+                       camera->camera->name.c_str(), error.what());
   }
-  logNewRendererWarnings();
 }
 
 void CameraIo::logNewRendererWarnings() {

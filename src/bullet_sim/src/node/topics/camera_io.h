@@ -12,7 +12,9 @@
 #include <ros/publisher.h>
 #include <sensor_msgs/CameraInfo.h>
 
+#include <exception>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,14 +47,33 @@ class CameraIo {
                 const std::string& tf_prefix);
   void removeRobot(const std::string& robot);
 
-  /// Publishes a due camera (due.kind == SensorKind::Camera) if it is watched.
-  void publish(const bullet_sim::DueSensor& due);
+  /// Publishes the cameras due at one time (each due.kind == SensorKind::Camera, each
+  /// camera once) that are watched; their frames are rendered together
+  /// (CameraRenderer::renderTogether). A camera that cannot be rendered is reported and
+  /// the others are published all the same.
+  void publish(const std::vector<bullet_sim::DueSensor>& due);
 
  private:
   struct Topics {
     CountedPublisher image, info;
     std::string frame_id;
   };
+  /// A due camera that someone watches, and its frame once rendered.
+  struct Watched {
+    const bullet_sim::DueSensor* due;
+    Topics* topics;
+    const bullet_sim::CameraSpec* camera;
+    bool image_wanted, info_wanted, depth_wanted;
+    bullet_sim::ImageData image;
+    bullet_sim::DepthImageData depth;
+    std::exception_ptr render_error;  ///< why the frame was not rendered, if it was not
+  };
+
+  /// The camera of `due` if someone subscribes to any of its topics.
+  std::optional<Watched> watched(const bullet_sim::DueSensor& due);
+  /// Publishes what `camera` has to publish once its frame is rendered (or reports why
+  /// it was not).
+  void publish(Watched* camera);
 
   void logNewRendererWarnings();
 
