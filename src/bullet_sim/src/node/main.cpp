@@ -14,6 +14,7 @@
 
 #include <malloc.h>
 
+#include <atomic>
 #include <future>
 #include <memory>
 #include <string>
@@ -27,9 +28,10 @@ using bullet_sim_node::SimulatorNode;
 /// The world file named on the command line, loaded on a thread of its own so that
 /// libsdformat parses it while roscpp starts (its XML-RPC server, /rosout, the parameters).
 /// The spec is handed over as soon as it is read; the thread then frees the parser's
-/// documents while the simulator starts, and gives the memory back. glibc's fastbins are off
-/// meanwhile: libsdformat allocates and frees a great many small pieces, and without
-/// fastbins glibc does not stop to consolidate them (the load takes a seventh less CPU).
+/// documents while the simulator starts, and once it has ended, finish() gives the memory
+/// back to the system. glibc's fastbins are off meanwhile: libsdformat allocates and frees
+/// a great many small pieces, and without fastbins glibc does not stop to consolidate them
+/// (the load takes a seventh less CPU).
 class WorldPreload {
  public:
   explicit WorldPreload(const std::string& world_file) : file_(world_file) {
@@ -45,6 +47,13 @@ class WorldPreload {
   WorldPreload& operator=(const WorldPreload&) = delete;
 
   const std::string& file() const { return file_; }
+  /// Once the thread has freed the documents and ended: joins it and gives what the load
+  /// left free back to the system (the thread's arena too). Does not wait for it.
+  void finish() {
+    if (!thread_.joinable() || !ended_.load(std::memory_order_acquire)) return;
+    thread_.join();
+    malloc_trim(0);
+  }
   /// Valid until get() is called, when a file was named.
   std::future<bullet_sim::WorldSpec>& spec() { return spec_; }
 
@@ -60,7 +69,7 @@ class WorldPreload {
     }
     documents.reset();
     mallopt(M_MXFAST, kGlibcDefaultMaxFast);
-    malloc_trim(0);  // what the documents held goes back to the system, as after a spawn
+    ended_.store(true, std::memory_order_release);
   }
 
   /// glibc's default M_MXFAST: 64 * sizeof(size_t) / 4 bytes.
@@ -69,6 +78,7 @@ class WorldPreload {
   std::string file_;
   std::promise<bullet_sim::WorldSpec> promise_;
   std::future<bullet_sim::WorldSpec> spec_;
+  std::atomic<bool> ended_{false};
   std::thread thread_;
 };
 
@@ -96,7 +106,10 @@ int main(int argc, char** argv) {
     const std::unique_ptr<SimulatorNode> simulator =
         startSimulator(config, &preload, nh, gazebo_nh);
     ros::CallbackQueue& callbacks = *ros::getGlobalCallbackQueue();
-    while (ros::ok()) simulator->spinOnce(callbacks);
+    while (ros::ok()) {
+      simulator->spinOnce(callbacks);
+      preload.finish();
+    }
     return 0;
   } catch (const bullet_sim_node::ConfigError& error) {
     ROS_FATAL("%s", error.what());
