@@ -102,6 +102,14 @@ class DepthCamera(unittest.TestCase):
         self.assertAlmostEqual(point[0], 0.0, delta=1e-6)
         self.assertAlmostEqual(point[1], 0.0, delta=1e-6)
         self.assertAlmostEqual(point[2], centre, delta=1e-6)
+        # The cloud's colours are the same frame's image (the cloud is made on the node's
+        # publishing thread from its own copy of the frame).
+        image = got["rgb/image_raw"][-1]
+        self.assertEqual(image.header.stamp, cloud.header.stamp)
+        for row, col in ((HEIGHT // 2, WIDTH // 2), (HEIGHT - 1, 0), (0, WIDTH - 1)):
+            i = row * WIDTH + col
+            self.assertEqual(bytes(cloud.data[32 * i + 16:32 * i + 19]),
+                             bytes(image.data[3 * i:3 * i + 3]), "row %d col %d" % (row, col))
 
     def test_nothing_is_made_while_nobody_subscribes(self):
         watched = ["depth/image_raw", "depth/points", "rgb/image_raw"]

@@ -11,6 +11,8 @@
 #include <boost/make_shared.hpp>
 
 #include <cstring>
+#include <memory>
+#include <utility>
 
 namespace bullet_sim_node {
 namespace {
@@ -111,18 +113,32 @@ void DepthCameraIo::publish(const std::string& robot, size_t index,
                             bullet_sim::DepthImageData* depth, const bullet_sim::ImageData& image) {
   const Topics* topics = find(robot, index);
   if (!topics) return;
-  if (topics->points.hasSubscribers()) {
-    bullet_sim::PointCloudData cloud;
-    bullet_sim::makePointCloud(camera, *depth, image, &cloud);
-    sensor_msgs::PointCloud2Ptr msg = toMsg(&cloud);
-    msg->header.frame_id = topics->frame_id;
-    queue_.publish(topics->points.publisher(), std::move(msg));
+  const bool points = topics->points.hasSubscribers();
+  const bool depth_image = topics->depth.hasSubscribers();
+  if (!points && !depth_image) return;
+  // The stepping thread hands the frame over; the cloud and both messages are made on the
+  // publishing thread (a 640 x 480 cloud is 9.8 MB to write).
+  auto frame = std::make_shared<Frame>();
+  frame->depth = std::move(*depth);
+  if (points) {
+    frame->camera = camera;
+    frame->colours = image;
   }
-  if (topics->depth.hasSubscribers()) {
-    sensor_msgs::ImagePtr msg = toMsg(depth);
-    msg->header.frame_id = topics->frame_id;
-    queue_.publish(topics->depth.publisher(), std::move(msg));
-  }
+  queue_.push([frame, points, depth_image, points_out = topics->points.publisher(),
+               depth_out = topics->depth.publisher(), frame_id = topics->frame_id] {
+    if (points) {
+      bullet_sim::PointCloudData cloud;
+      bullet_sim::makePointCloud(frame->camera, frame->depth, frame->colours, &cloud);
+      sensor_msgs::PointCloud2Ptr msg = toMsg(&cloud);
+      msg->header.frame_id = frame_id;
+      points_out.publish(sensor_msgs::PointCloud2ConstPtr(std::move(msg)));
+    }
+    if (depth_image) {
+      sensor_msgs::ImagePtr msg = toMsg(&frame->depth);
+      msg->header.frame_id = frame_id;
+      depth_out.publish(sensor_msgs::ImageConstPtr(std::move(msg)));
+    }
+  });
 }
 
 }  // namespace bullet_sim_node
