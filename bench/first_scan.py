@@ -5,11 +5,12 @@ this process has its first laser scan, either with the master started by roslaun
 (`own-master`) or with a master already running (`running-master`). rospy is imported before
 the clock starts. Then, after 5 s of simulation at real time, reads bullet_sim_node's
 resident memory. Prints both, the simulator's part (from its process start to the first
-scan) and the launch time last, after a timeline of when each stage was first seen (polling the master every 5 ms): the master up, the robot description set
-(xacro done), the simulator's process started (roslaunch started gzserver, which becomes
-bullet_sim_node; from /proc, to 10 ms), the simulator registered with the master (its roscpp
-started), the simulator's spawn service up (world loaded), spawn_model registered, the
-robot's /scan advertised (robot spawned), the first scan received.
+scan) and the launch time last, after a timeline of when each stage was first seen
+(polling the master every 5 ms): the master up, the robot description set (xacro done),
+the simulator's process started (roslaunch started gzserver, which becomes bullet_sim_node;
+from /proc, to 10 ms), the simulator registered with the master (its roscpp started), the
+simulator's spawn service up (world loaded), spawn_model registered, the robot's /scan
+advertised (robot spawned), the first scan received.
 
 Usage: first_scan.py own-master|running-master   (BENCH_ROS_PORT, default 11462)
 """
