@@ -5,12 +5,17 @@ marker in frame world whose pose and size match within 1 mm and whose colour is 
 visual's diffuse colour."""
 import math
 import threading
+import time
 import unittest
+import xmlrpc.client
 import xml.etree.ElementTree as ET
 
 import numpy as np
+import rosgraph
 import rospy
 import rostest
+from gazebo_msgs.msg import ModelState
+from gazebo_msgs.srv import SetModelState
 from visualization_msgs.msg import Marker, MarkerArray
 
 MM = 1e-3
@@ -121,6 +126,42 @@ class WorldMarkers(unittest.TestCase):
             self.assertLess(math.hypot(m.pose.position.x, m.pose.position.y), 0.12, m.id)
             self.assertGreater(m.pose.position.z, 0.0)
             self.assertLess(m.pose.position.z, 0.6)
+
+    def test_who_subscribes_after_a_move_gets_the_model_where_it_is_now(self):
+        # Nobody listens to /gazebo/model_markers while the Burger is moved 1.5 m: the node
+        # does not check that topic then, and must check it again once a listener connects.
+        # Runs after the test above (unittest's name order), which found it at the origin.
+        master = rosgraph.Master('/world_markers_test')
+        node = xmlrpc.client.ServerProxy(master.lookupNode('/bullet_sim'))
+
+        def node_sends_model_markers():
+            # getBusInfo: [id, peer, direction, transport, topic, connected, ...] per link
+            _, _, links = node.getBusInfo('/world_markers_test')
+            return any(link[2] == 'o' and link[4] == '/gazebo/model_markers' for link in links)
+        deadline = time.monotonic() + 30
+        while node_sends_model_markers():
+            self.assertLess(time.monotonic(), deadline, 'a subscriber of model_markers stayed')
+            time.sleep(0.05)
+        rospy.wait_for_service('/gazebo/set_model_state', timeout=30)
+        state = ModelState(model_name='burger', reference_frame='world')
+        state.pose.position.x, state.pose.position.y = 1.2, -0.9
+        state.pose.orientation.w = 1.0
+        self.assertTrue(rospy.ServiceProxy('/gazebo/set_model_state', SetModelState)(state)
+                        .success)
+
+        moved = threading.Event()
+
+        def on_array(msg):
+            # The latched array first (it may still show the Burger at the origin), then
+            # the current one: every visual within the 0.14 m footprint of (1.2, -0.9).
+            burger = [m for m in msg.markers[1:] if m.ns == 'burger']
+            if len(burger) >= 8 and all(
+                    math.hypot(m.pose.position.x - 1.2, m.pose.position.y + 0.9) < 0.12
+                    for m in burger):
+                moved.set()
+        sub = rospy.Subscriber('/gazebo/model_markers', MarkerArray, on_array)
+        self.assertTrue(moved.wait(30), 'model_markers never showed the Burger where it was moved')
+        sub.unregister()
 
 
 if __name__ == '__main__':

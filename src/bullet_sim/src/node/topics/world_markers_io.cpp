@@ -3,6 +3,8 @@
 #include "topics/conversions.h"
 
 #include <cstdlib>
+#include <set>
+#include <utility>
 
 #include <ros/console.h>
 #include <visualization_msgs/MarkerArray.h>
@@ -92,35 +94,25 @@ visualization_msgs::Marker toMarkerMsg(const bullet_sim::MarkerShape& shape) {
 
 }  // namespace
 
-WorldMarkersIo::WorldMarkersIo(const bullet_sim::Simulation& sim, const ros::NodeHandle& nh)
-    : sim_(sim),
-      markers_(sim.world(), kPositionToleranceM, kAngleToleranceRad),
-      model_markers_(bullet_sim::WorldSpec(), kPositionToleranceM, kAngleToleranceRad),
-      last_check_(std::chrono::steady_clock::now()),
-      last_model_check_(last_check_) {
-  ros::NodeHandle handle(nh);
-  pub_ = handle.advertise<visualization_msgs::MarkerArray>("world_markers", 1, true);
-  model_pub_ = handle.advertise<visualization_msgs::MarkerArray>("model_markers", 1, true);
-  std::set<std::string> world_models;
-  for (const bullet_sim::WorldModel& model : sim.world().models) world_models.insert(model.name);
-  model_markers_.trackEveryModelBut(world_models);
-  if (const auto all = markers_.update(sim_)) publish(pub_, *all);
-  if (const auto all = model_markers_.update(sim_)) publish(model_pub_, *all);
+WorldMarkersIo::Topic::Topic(bullet_sim::WorldMarkerSet marker_set,
+                             std::chrono::milliseconds check_period)
+    : set(std::move(marker_set)),
+      period(check_period),
+      last_check(std::chrono::steady_clock::now()) {}
+
+void WorldMarkersIo::Topic::advertise(ros::NodeHandle& nh, const std::string& name) {
+  pub = nh.advertise<visualization_msgs::MarkerArray>(name, 1, true);
 }
 
-void WorldMarkersIo::update() {
-  const auto now = std::chrono::steady_clock::now();
-  if (now - last_model_check_ >= kModelCheckPeriod) {
-    last_model_check_ = now;
-    if (const auto all = model_markers_.update(sim_)) publish(model_pub_, *all);
-  }
-  if (now - last_check_ < kCheckPeriod) return;
-  last_check_ = now;
-  if (const auto all = markers_.update(sim_)) publish(pub_, *all);
+void WorldMarkersIo::Topic::update(const bullet_sim::Simulation& sim,
+                                   std::chrono::steady_clock::time_point now) {
+  if (now - last_check < period) return;
+  last_check = now;
+  if (pub.getNumSubscribers() == 0) return;
+  if (const auto all = set.update(sim)) publish(*all);
 }
 
-void WorldMarkersIo::publish(const ros::Publisher& pub,
-                             const std::vector<bullet_sim::MarkerShape>& markers) {
+void WorldMarkersIo::Topic::publish(const std::vector<bullet_sim::MarkerShape>& markers) const {
   visualization_msgs::MarkerArray array;
   // The array is always complete: clear what a listener drew before (a deleted model's
   // markers with it), then draw everything again.
@@ -130,6 +122,30 @@ void WorldMarkersIo::publish(const ros::Publisher& pub,
   array.markers.push_back(clear);
   for (const auto& shape : markers) array.markers.push_back(toMarkerMsg(shape));
   pub.publish(array);
+}
+
+WorldMarkersIo::WorldMarkersIo(const bullet_sim::Simulation& sim, const ros::NodeHandle& nh)
+    : sim_(sim),
+      world_(bullet_sim::WorldMarkerSet(sim.world(), kPositionToleranceM, kAngleToleranceRad),
+             kCheckPeriod),
+      models_(bullet_sim::WorldMarkerSet(bullet_sim::WorldSpec(), kPositionToleranceM,
+                                         kAngleToleranceRad),
+              kModelCheckPeriod) {
+  ros::NodeHandle handle(nh);
+  world_.advertise(handle, "world_markers");
+  models_.advertise(handle, "model_markers");
+  std::set<std::string> world_models;
+  for (const bullet_sim::WorldModel& model : sim.world().models) world_models.insert(model.name);
+  models_.set.trackEveryModelBut(world_models);
+  // Latched at once, listened to or not.
+  if (const auto all = world_.set.update(sim_)) world_.publish(*all);
+  if (const auto all = models_.set.update(sim_)) models_.publish(*all);
+}
+
+void WorldMarkersIo::update() {
+  const auto now = std::chrono::steady_clock::now();
+  models_.update(sim_, now);
+  world_.update(sim_, now);
 }
 
 }  // namespace bullet_sim_node

@@ -17,25 +17,39 @@ namespace bullet_sim_node {
 /// once at start, and again from update() when a tracked movable model has moved, checked
 /// at most a few times a second of wall time. The spawned models (robots), which a
 /// robot_state_publisher may draw instead, go to a topic of their own, `model_markers`,
-/// checked 20 times a second: what Gazebo's window would show of them.
+/// checked 20 times a second: what Gazebo's window would show of them. A topic nobody
+/// listens to is not checked (the checks are made on the stepping thread): a listener
+/// that connects gets the latched array at once, and the current one within the check
+/// period if anything moved meanwhile.
 class WorldMarkersIo {
  public:
   /// Advertises `world_markers` and `model_markers` in `nh` (the node uses /gazebo) and
   /// publishes the world.
   WorldMarkersIo(const bullet_sim::Simulation& sim, const ros::NodeHandle& nh);
+  WorldMarkersIo(const WorldMarkersIo&) = delete;
+  WorldMarkersIo& operator=(const WorldMarkersIo&) = delete;
 
   /// Draws the movable model `name` (a robot of the simulation) with the world from now on.
-  void track(const std::string& name) { markers_.track(name); }
+  void track(const std::string& name) { world_.set.track(name); }
   void update();
 
  private:
-  static void publish(const ros::Publisher& pub,
-                      const std::vector<bullet_sim::MarkerShape>& markers);
+  /// One latched MarkerArray topic and the set it shows.
+  struct Topic {
+    Topic(bullet_sim::WorldMarkerSet set, std::chrono::milliseconds period);
+    void advertise(ros::NodeHandle& nh, const std::string& name);
+    /// Publishes the set when it changed, checked every `period` while someone listens.
+    void update(const bullet_sim::Simulation& sim, std::chrono::steady_clock::time_point now);
+    void publish(const std::vector<bullet_sim::MarkerShape>& markers) const;
+
+    bullet_sim::WorldMarkerSet set;
+    const std::chrono::milliseconds period;
+    ros::Publisher pub;
+    std::chrono::steady_clock::time_point last_check;
+  };
 
   const bullet_sim::Simulation& sim_;
-  ros::Publisher pub_, model_pub_;
-  bullet_sim::WorldMarkerSet markers_, model_markers_;
-  std::chrono::steady_clock::time_point last_check_, last_model_check_;
+  Topic world_, models_;
 };
 
 }  // namespace bullet_sim_node
