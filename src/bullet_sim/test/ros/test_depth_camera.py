@@ -111,6 +111,22 @@ class DepthCamera(unittest.TestCase):
             self.assertEqual(bytes(cloud.data[32 * i + 16:32 * i + 19]),
                              bytes(image.data[3 * i:3 * i + 3]), "row %d col %d" % (row, col))
 
+    def test_a_cloud_watched_alone_has_the_frame_colours(self):
+        # Nobody watches the colour image: the node hands the frame's own bytes to the cloud
+        # instead of a copy. The robot and the panel stand still and nothing is noisy, so
+        # the next frame, watched with its image, has the same colours at every pixel.
+        alone = self.collect(["depth/points"], 2)["depth/points"][-1]
+        got = self.collect(["depth/points", "rgb/image_raw"], 1)
+        image = got["rgb/image_raw"][-1]
+        self.assertEqual(image.header.stamp, got["depth/points"][-1].header.stamp)
+        self.assertGreater(got["depth/points"][-1].header.stamp, alone.header.stamp)
+        cloud_colours = bytes(b for i in range(WIDTH * HEIGHT)
+                              for b in alone.data[32 * i + 16:32 * i + 19])
+        self.assertEqual(cloud_colours, bytes(image.data))
+        # Not a blank frame: the panel ahead and what lies around it differ.
+        pixels = {cloud_colours[k:k + 3] for k in range(0, len(cloud_colours), 3)}
+        self.assertGreater(len(pixels), 1)
+
     def test_nothing_is_made_while_nobody_subscribes(self):
         watched = ["depth/image_raw", "depth/points", "rgb/image_raw"]
         before = self.collect(watched, 3)

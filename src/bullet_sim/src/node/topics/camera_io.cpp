@@ -137,9 +137,11 @@ void CameraIo::publish(Watched* camera) {
   if (!camera->image_wanted && !camera->depth_wanted) return;
   try {
     if (camera->render_error) std::rethrow_exception(camera->render_error);
-    // The cloud takes its colours from the frame before the image message takes its bytes.
+    // The cloud takes its colours from the frame before the image message takes its bytes
+    // (a copy of them when the image is published too).
     if (camera->depth_wanted) {
-      depth_.publish(due.robot, due.index, *camera->camera, &camera->depth, camera->image);
+      depth_.publish(due.robot, due.index, *camera->camera, &camera->depth, &camera->image,
+                     camera->image_wanted);
     }
     if (!camera->image_wanted) return;
     sensor_msgs::ImagePtr image = toMsg(&camera->image);

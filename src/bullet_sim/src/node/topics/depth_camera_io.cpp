@@ -110,7 +110,8 @@ void DepthCameraIo::publishInfo(const std::string& robot, size_t index,
 
 void DepthCameraIo::publish(const std::string& robot, size_t index,
                             const bullet_sim::CameraSpec& camera,
-                            bullet_sim::DepthImageData* depth, const bullet_sim::ImageData& image) {
+                            bullet_sim::DepthImageData* depth, bullet_sim::ImageData* image,
+                            bool image_kept) {
   const Topics* topics = find(robot, index);
   if (!topics) return;
   const bool points = topics->points.hasSubscribers();
@@ -122,7 +123,7 @@ void DepthCameraIo::publish(const std::string& robot, size_t index,
   frame->depth = std::move(*depth);
   if (points) {
     frame->camera = camera;
-    frame->colours = image;
+    frame->colours = image_kept ? *image : std::move(*image);
   }
   queue_.push([frame, points, depth_image, points_out = topics->points.publisher(),
                depth_out = topics->depth.publisher(), frame_id = topics->frame_id] {

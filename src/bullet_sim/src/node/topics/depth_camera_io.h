@@ -42,11 +42,13 @@ class DepthCameraIo {
   void publishInfo(const std::string& robot, size_t index, const bullet_sim::CameraSpec& camera,
                    double time_s);
   /// Publishes the depth image and the point cloud (coloured from `image`) of a rendered
-  /// frame to whichever of them someone subscribes. `depth` is moved out, and `image`
-  /// copied when the cloud is wanted: the cloud and the messages are made on the publishing
-  /// thread, and leave in the queue's order (before what is queued after this call).
+  /// frame to whichever of them someone subscribes. `depth` is moved out; when the cloud is
+  /// wanted, `image` is copied if `image_kept` (the caller publishes it too), else moved
+  /// out. The cloud and the messages are made on the publishing thread, and leave in the
+  /// queue's order (before what is queued after this call).
   void publish(const std::string& robot, size_t index, const bullet_sim::CameraSpec& camera,
-               bullet_sim::DepthImageData* depth, const bullet_sim::ImageData& image);
+               bullet_sim::DepthImageData* depth, bullet_sim::ImageData* image,
+               bool image_kept);
 
  private:
   /// What the publishing thread makes a depth frame's messages from.
