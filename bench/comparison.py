@@ -62,6 +62,7 @@ RATIOS = (
     ("vs_mujoco_core", "core", "mujoco", False),
     ("vs_mujoco_camera", "camera_ours", "camera_mujoco", True),
     ("vs_mujoco_depth", "depth_ours", "depth_mujoco", True),
+    ("vs_mujoco_camera_textured", "textured_ours", "textured_mujoco", True),
     ("vs_pybullet_node", "node", "pybullet", False),
 )
 

@@ -12,12 +12,16 @@ files that bullet_sim loads, so that dimensions, masses and walls cannot drift a
   with +z up at the URDF's horizontal field of view, rendered without multisampling (as
   Gazebo's cameras and bullet_sim's);
 - the world's static boxes (walls: group 0, seen by the lidar) and the ground plane, with
-  the world's ambient and directional light.
+  the world's ambient and directional light;
+- with `textures` (the floor's and the walls' image files of textured_world.py), the ground
+  wears the floor's image repeated every textured_world.FLOOR_TILE_M metres and the walls
+  the walls' image, untinted, as the textured world's material scripts paint them.
 """
 import math
 import xml.etree.ElementTree as ET
 
 import scenario
+import textured_world
 
 ROBOT_CONTACT = 'contype="2" conaffinity="1" priority="1"'
 WORLD_CONTACT = 'contype="1" conaffinity="2"'
@@ -132,14 +136,28 @@ def robot_bodies(urdf_file):
     return "\n".join(out)
 
 
-def world_geoms(world_file):
+def world_geoms(world_file, textured=False):
     out = []
     for name, (x, y, z, yaw), size, rgba, collides in scenario.read_world(world_file):
         contact = 'group="0" ' + WORLD_CONTACT if collides else VISUAL_ONLY
-        out.append('<geom name="%s" type="box" pos="%s" quat="%s" size="%s" rgba="%s" %s/>' % (
+        look = 'material="bench_wall"' if textured and name.startswith("wall_") \
+            else 'rgba="%s"' % fmt(rgba)
+        out.append('<geom name="%s" type="box" pos="%s" quat="%s" size="%s" %s %s/>' % (
             name, fmt((x, y, z)), fmt(quat_from_rpy(0, 0, yaw)), fmt(s / 2 for s in size),
-            fmt(rgba), contact))
+            look, contact))
     return "\n".join(out)
+
+
+def texture_assets(textures):
+    """The <asset> of the floor's and the walls' images: the floor repeated every
+    FLOOR_TILE_M metres (texuniform: repeats per metre), a wall's image once per face."""
+    floor, wall = textures
+    return """<asset>
+    <texture name="bench_floor" type="2d" file="%s"/>
+    <texture name="bench_wall" type="2d" file="%s"/>
+    <material name="bench_floor" texture="bench_floor" texuniform="true" texrepeat="%g %g"/>
+    <material name="bench_wall" texture="bench_wall"/>
+  </asset>""" % (floor, wall, 1 / textured_world.FLOOR_TILE_M, 1 / textured_world.FLOOR_TILE_M)
 
 
 def world_light(world_file):
@@ -156,16 +174,18 @@ def world_light(world_file):
                                             " ".join(light.find("diffuse").text.split()[:3]))
 
 
-def build_mjcf(urdf_file, world_file):
+def build_mjcf(urdf_file, world_file, textures=None):
     headlight, light = world_light(world_file)
     torque = scenario.WHEEL_TORQUE_NM
+    ground_look = 'material="bench_floor"' if textures else 'rgba="0.5 0.5 0.5 1"'
     return """<mujoco model="round_track_burger">
   <compiler angle="radian" inertiafromgeom="false" fusestatic="true"/>
   <option timestep="%g" integrator="implicitfast" gravity="0 0 -9.8"/>
   <visual>%s<quality offsamples="0"/><global offwidth="640" offheight="480"/></visual>
+  %s
   <worldbody>
     %s
-    <geom name="ground_plane" type="plane" size="50 50 0.1" rgba="0.5 0.5 0.5 1" group="0"
+    <geom name="ground_plane" type="plane" size="50 50 0.1" %s group="0"
           %s friction="100 0.005 0.0001"/>
 %s
 %s
@@ -175,5 +195,6 @@ def build_mjcf(urdf_file, world_file):
     <velocity name="wheel_right_joint" joint="wheel_right_joint" kv="1" forcerange="-%g %g"/>
   </actuator>
 </mujoco>
-""" % (scenario.STEP_S, headlight, light, WORLD_CONTACT, world_geoms(world_file),
+""" % (scenario.STEP_S, headlight, texture_assets(textures) if textures else "", light,
+       ground_look, WORLD_CONTACT, world_geoms(world_file, bool(textures)),
        robot_bodies(urdf_file), torque, torque, torque, torque)

@@ -9,11 +9,16 @@ and link poses at 30 Hz, the command of bench/sim_rtf.sh. No ROS.
   mujoco_rtf.py URDF WORLD camera FRAMES        640x480 frames of the Burger's camera with
                                                 the world's lights (MUJOCO_GL=egl), then
                                                 depth frames; prints the median ms last
+  mujoco_rtf.py URDF TEXTURED_WORLD camera-textured FRAMES
+                                                the same colour frames of the round track
+                                                that textured_world.py painted, its images
+                                                as MuJoCo textures
 The camera renders without multisampling, as Gazebo's and bullet_sim's cameras do (MuJoCo's
 default of 4 samples costs about 4x per frame on llvmpipe); the sky stays black (no skybox).
 Needs the mujoco wheel (bench/compare installs it into build/bench_venv).
 """
 import math
+import os
 import statistics
 import sys
 import time
@@ -23,10 +28,11 @@ import numpy as np
 import mujoco
 import mjcf_builder
 import scenario
+import textured_world
 
 
-def load_model(urdf_file, world_file):
-    xml = mjcf_builder.build_mjcf(urdf_file, world_file)
+def load_model(urdf_file, world_file, textures=None):
+    xml = mjcf_builder.build_mjcf(urdf_file, world_file, textures)
     return mujoco.MjModel.from_xml_string(xml)
 
 
@@ -124,7 +130,7 @@ def run_rtf(model, sim_s):
                                                                       wall_s))
 
 
-def frame_times_ms(model, frames, depth):
+def frame_times_ms(model, frames, depth, textured=False):
     """Renders `frames` camera frames 1/30 s of sim time apart while the robot drives."""
     data = mujoco.MjData(model)
     robot = Burger(model, data)
@@ -142,12 +148,14 @@ def frame_times_ms(model, frames, depth):
             if frame > 0:  # the first frame builds GL state
                 times.append(1e3 * (time.monotonic() - start))
             if frame == 1:
-                check_image(image, depth)
+                check_image(image, depth, textured)
     return times
 
 
-def check_image(image, depth):
-    """Raises unless a frame shows the walls and floor (not a blank or black frame)."""
+def check_image(image, depth, textured=False):
+    """Raises unless a frame shows the walls and floor (not a blank or black frame); a
+    textured frame must also show its images: many shades of wall and of floor, where the
+    plain track's flat faces have a few."""
     if depth:
         finite = image[(image > 0.02) & (image < 100)]
         if finite.size < image.size // 2 or finite.min() > 1.0:
@@ -159,6 +167,8 @@ def check_image(image, depth):
     if brown < pixels.shape[0] // 10 or grey < pixels.shape[0] // 10:
         raise scenario.SanityError("mujoco: the camera frame shows %d wall and %d floor pixels "
                                    "of %d" % (brown, grey, pixels.shape[0]))
+    if textured:
+        scenario.check_textured_frame(pixels, "mujoco")
 
 
 def run_camera(model, frames):
@@ -172,16 +182,28 @@ def run_camera(model, frames):
     print("mujoco camera median %.3f ms depth median %.3f ms" % tuple(info))
 
 
+def run_textured_camera(model, frames):
+    times = frame_times_ms(model, frames, False, textured=True)
+    print("mujoco %s 640x480 rgb frame, textured: median %.2f ms, p95 %.2f ms (%d frames)" % (
+        mujoco.__version__, statistics.median(times), sorted(times)[int(0.95 * (len(times) - 1))],
+        len(times)))
+    print("mujoco textured camera median %.3f ms" % statistics.median(times))
+
+
 def main():
     urdf_file, world_file, mode, amount = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
-    model = load_model(urdf_file, world_file)
+    textures = textured_world.texture_files(os.path.dirname(world_file)) \
+        if mode == "camera-textured" else None
+    model = load_model(urdf_file, world_file, textures)
     try:
         if mode == "rtf":
             run_rtf(model, float(amount))
         elif mode == "camera":
             run_camera(model, int(amount))
+        elif mode == "camera-textured":
+            run_textured_camera(model, int(amount))
         else:
-            sys.exit("unknown mode %r: rtf or camera" % mode)
+            sys.exit("unknown mode %r: rtf, camera or camera-textured" % mode)
     except scenario.SanityError as error:
         sys.exit("sanity check failed: %s" % error)
 

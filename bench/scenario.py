@@ -106,6 +106,25 @@ class Track:
                                   who, self.length_m, self.turned_rad, sim_s, want_m, want_rad))
 
 
+TEXTURED_SHADES = 40   # fewest shades of wall and of floor in a frame of the textured track
+
+
+def check_textured_frame(pixels, who):
+    """Raises unless a frame of textured_world.py's round track, (r, g, b) pixels, shows its
+    images: at least TEXTURED_SHADES shades among its wall (brown) pixels and among its floor
+    (grey) pixels, where the plain track's lit flat faces show a handful of each."""
+    walls, floors = set(), set()
+    for r, g, b in pixels:
+        if r > b + 15 and g > b:
+            walls.add((r, g, b))
+        elif abs(r - b) < 10 and r > 40:
+            floors.add((r, g, b))
+    if len(walls) < TEXTURED_SHADES or len(floors) < TEXTURED_SHADES:
+        raise SanityError("%s: the textured frame shows %d shades of wall and %d of floor, "
+                          "fewer than %d: its textures were not drawn" % (
+                              who, len(walls), len(floors), TEXTURED_SHADES))
+
+
 def yaw_of_quaternion(w, x, y, z):
     """Heading (rotation about world z) of a unit quaternion."""
     return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))

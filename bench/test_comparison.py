@@ -46,13 +46,14 @@ def test_table_and_last_line_give_ratios_to_the_peers():
 def test_last_line_adds_depth_and_the_robot_figures():
     results = {"node": [100], "core": [160], "mujoco": [120], "pybullet": [20],
                "camera_ours": [0.5], "camera_mujoco": [5.0], "depth_ours": [0.6],
-               "depth_mujoco": [6.0], "robots_1": [70, 74, 80], "robots_16": [5.2, 5.3, 6.1],
+               "depth_mujoco": [6.0], "textured_ours": [2.0, 2.5], "textured_mujoco": [10.0],
+               "robots_1": [70, 74, 80], "robots_16": [5.2, 5.3, 6.1],
                "robots_core_16": [9.0], "robots_core_16_1thread": [6.3],
                "launch_own": [1.31, 1.194, 1.25], "launch_running": [0.987],
                "launch_sim_own": [0.52, 0.498], "launch_sim_running": [0.471],
                "memory": [26.84, 26.9, 27.0]}
     assert last_line(results, (1.0, 1.0, 1.0)) == (
         "vs_mujoco_node=0.83 vs_mujoco_core=1.33 vs_mujoco_camera=10.00 vs_mujoco_depth=10.00 "
-        "vs_pybullet_node=5.00 robots_1=74.0 robots_16=5.3 robots_core_16=9.0 "
+        "vs_mujoco_camera_textured=4.44 vs_pybullet_node=5.00 robots_1=74.0 robots_16=5.3 robots_core_16=9.0 "
         "robots_core_16_1thread=6.3 launch_own=1.25 launch_running=0.99 launch_sim_own=0.51 "
         "launch_sim_running=0.47 memory=26.9 loadavg=1.00/1.00/1.00")

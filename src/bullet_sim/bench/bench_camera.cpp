@@ -11,8 +11,12 @@
 // (render()) and together (renderTogether(), on the simulation's threads), alternately
 // first. Prints the median time of each way per time they fall due.
 //
-// Usage: bullet_sim_camera_bench [--cameras N [--threads T]] <robot.urdf> <world.sdf>
-//                                [sim_seconds]
+// With --save-frame FILE, the last colour frame of the single camera is written to FILE
+// (binary PPM), for a look or a check of what was drawn. Warnings of the world and of the
+// renderer (a texture that could not be read, say) are printed as "warning: ..." lines.
+//
+// Usage: bullet_sim_camera_bench [--cameras N [--threads T]] [--save-frame FILE]
+//                                <robot.urdf> <world.sdf> [sim_seconds]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,6 +32,7 @@
 #include "bullet_sim/render/camera_renderer.h"
 #include "bullet_sim/render/depth_camera.h"
 #include "bullet_sim/simulation.h"
+#include "sim_render/image_io.h"
 
 namespace {
 
@@ -39,6 +44,8 @@ double secondsSince(Clock::time_point start) {
 
 struct Run {
   double wall_s = 0, sim_s = 0;
+  bullet_sim::ImageData last_image;
+  std::vector<std::string> warnings;  ///< the renderer's
   std::vector<double> frame_ms;
   std::vector<double> cloud_ms;  ///< a depth camera's point cloud, made after its frame
 };
@@ -71,7 +78,18 @@ Run runScenario(const bullet_sim::WorldSpec& world, const bullet_sim::RobotSpec&
   }
   run.wall_s = secondsSince(start);
   run.sim_s = sim.timeS();
+  run.last_image = std::move(image);
+  run.warnings = renderer.warnings();
   return run;
+}
+
+/// The frame as a binary PPM (rgb8; other encodings are refused).
+void writeFrame(const std::string& path, const bullet_sim::ImageData& image) {
+  if (image.encoding != "rgb8") {
+    throw std::invalid_argument("--save-frame: the camera's frames are " + image.encoding +
+                                ", not rgb8");
+  }
+  sim_render::writePpm(path, image.width, image.height, image.data);
 }
 
 double percentile(std::vector<double> values, double q) {
@@ -161,11 +179,14 @@ int benchTogether(const bullet_sim::RobotSpec& robot, const bullet_sim::WorldSpe
 int main(int argc, char** argv) {
   int cameras = 0;
   unsigned threads = 2;
+  std::string save_frame;
   int arg = 1;
   bool usable = true;
   for (; arg < argc && std::strncmp(argv[arg], "--", 2) == 0; arg += 2) {
     const bool valued = arg + 1 < argc && std::atoi(argv[arg + 1]) > 0;
-    if (valued && std::strcmp(argv[arg], "--cameras") == 0) {
+    if (arg + 1 < argc && std::strcmp(argv[arg], "--save-frame") == 0) {
+      save_frame = argv[arg + 1];
+    } else if (valued && std::strcmp(argv[arg], "--cameras") == 0) {
       cameras = std::atoi(argv[arg + 1]);
     } else if (valued && std::strcmp(argv[arg], "--threads") == 0) {
       threads = static_cast<unsigned>(std::atoi(argv[arg + 1]));
@@ -176,7 +197,8 @@ int main(int argc, char** argv) {
   }
   if (!usable || argc - arg < 2) {
     std::fprintf(stderr,
-                 "usage: %s [--cameras N [--threads T]] <robot.urdf> <world.sdf> [sim_seconds]\n",
+                 "usage: %s [--cameras N [--threads T]] [--save-frame FILE] <robot.urdf> "
+                 "<world.sdf> [sim_seconds]\n",
                  argv[0]);
     return 2;
   }
@@ -186,12 +208,17 @@ int main(int argc, char** argv) {
     const bullet_sim::RobotSpec robot = bullet_sim::parseRobotFile(robot_file);
     const bullet_sim::WorldSpec world = bullet_sim::loadWorldFile(argv[arg + 1]);
     if (robot.cameras.empty()) throw bullet_sim::LoadError(std::string(robot_file) + ": no camera");
+    for (const std::string& warning : world.warnings) std::printf("warning: %s\n", warning.c_str());
     if (cameras > 0) return benchTogether(robot, world, cameras, threads, sim_seconds);
     const bullet_sim::CameraSpec& camera = robot.cameras[0];
     const Run plain = runScenario(world, robot, sim_seconds, false);
     const Run with_camera = runScenario(world, robot, sim_seconds, true);
     const std::vector<double>& ms = with_camera.frame_ms;
     if (ms.empty()) throw bullet_sim::LoadError("the camera was never due");
+    for (const std::string& warning : with_camera.warnings) {
+      std::printf("warning: %s\n", warning.c_str());
+    }
+    if (!save_frame.empty()) writeFrame(save_frame, with_camera.last_image);
     std::printf("%s '%s': %d x %d %s at %g Hz, %zu frames in %.1f s sim\n",
                 camera.depth ? "depth camera (frame and depth image)" : "camera",
                 camera.name.c_str(), camera.width, camera.height, camera.format.c_str(),
