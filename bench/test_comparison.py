@@ -54,6 +54,6 @@ def test_last_line_adds_depth_and_the_robot_figures():
                "memory": [26.84, 26.9, 27.0]}
     assert last_line(results, (1.0, 1.0, 1.0)) == (
         "vs_mujoco_node=0.83 vs_mujoco_core=1.33 vs_mujoco_camera=10.00 vs_mujoco_depth=10.00 "
-        "vs_mujoco_camera_textured=4.44 vs_pybullet_node=5.00 robots_1=74.0 robots_16=5.3 robots_core_16=9.0 "
-        "robots_core_16_1thread=6.3 launch_own=1.25 launch_running=0.99 launch_sim_own=0.51 "
+        "vs_mujoco_camera_textured=4.44 vs_pybullet_node=5.00 robots_1=74.0 robots_16=5.3 "
+        "robots_core_16=9.0 robots_core_16_1thread=6.3 launch_own=1.25 launch_running=0.99 launch_sim_own=0.51 "
         "launch_sim_running=0.47 memory=26.9 loadavg=1.00/1.00/1.00")

@@ -21,6 +21,15 @@ struct RasterTarget {
 
 enum class RasterResult { Culled, Drawn, DrawnClipped };
 
+#if defined(__SSE2__)
+/// std::floor of in[0..3] into out[0..3], four at a time as the textured spans take it
+/// (SSE2; the same bits as std::floor for every float).
+void floorFour(const float* in, float* out);
+#endif
+/// Whether textured spans take four pixels at a time where the processor can (the
+/// default) or one at a time; both give the same bytes. For tests that compare them.
+void setFourPixelTexturing(bool on);
+
 /// A texture as one triangle is painted with it: the coordinates of its corners and the
 /// light's factor per channel (colour times lighting; 1 leaves the texel as it is).
 struct TexturedCorners {

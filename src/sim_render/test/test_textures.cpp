@@ -2,9 +2,13 @@
 // by hand from Gazebo Classic's mappings (unit_plane, unit_box) and pinhole projection.
 #include <gtest/gtest.h>
 
+#include "../src/polygon_raster.h"
 #include "render_test_util.h"
 #include "sim_render/renderer.h"
 
+#include <cmath>
+#include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -242,6 +246,64 @@ TEST(Textures, BadTextureSizesAreNamed) {
     FAIL() << "no throw";
   } catch (const std::invalid_argument& e) {
     EXPECT_STREQ(e.what(), "texture of 2 x 2 needs 12 bytes of rgb8, got 5");
+  }
+}
+
+#if defined(__SSE2__)
+TEST(Textures, FourAtATimeFloorIsStdFloorToTheBit) {
+  const float big = 8388608.0f;  // 2^23: from here on every float is whole
+  const float values[] = {0.0f, -0.0f, 0.5f, -0.5f, 1.0f, -1.0f, 0.999999f, -0.999999f,
+                          1e-30f, -1e-30f, 1e-42f, -1e-42f, 2.5f, -2.5f, 49.75f, -49.75f,
+                          big - 0.5f, -(big - 0.5f), big, -big, big + 1.0f, 3e9f, -3e9f,
+                          1e30f, -1e30f, std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::quiet_NaN()};
+  constexpr size_t kCount = sizeof(values) / sizeof(values[0]);
+  for (size_t i = 0; i + 4 <= kCount; i += 4) {
+    float out[4];
+    detail::floorFour(values + i, out);
+    for (size_t lane = 0; lane < 4; ++lane) {
+      const float expected = std::floor(values[i + lane]);
+      std::uint32_t got_bits, expected_bits;
+      std::memcpy(&got_bits, &out[lane], 4);
+      std::memcpy(&expected_bits, &expected, 4);
+      EXPECT_EQ(got_bits, expected_bits) << "floor of " << values[i + lane];
+    }
+  }
+}
+#endif
+
+TEST(Textures, FourPixelsAtATimeAndOneAtATimeGiveTheSameFrame) {
+  // A lit scene (texels scaled by the light) of a floor tiled 40 times each way, seen at a
+  // grazing angle so that its far rows take small mipmap levels and its coordinates run
+  // from -20 to 20, and a tilted box: every pixel the same either way.
+  Scene scene;
+  scene.lighting().ambient = {0.3f, 0.3f, 0.3f};
+  scene.lighting().diffuse = {0.8f, 0.7f, 0.6f};
+  scene.lighting().direction = {0.3, -0.4, -1.0};
+  ShapeSpec floor = ShapeSpec::plane(20, 20, {1, 1, 1, 1});
+  floor.texture = makeTexture(64, 48, [](int x, int y) {
+    return Rgb{(x * 37 + y * 11) % 256, (x * 5 + y * 53) % 256, (x * y) % 256};
+  });
+  floor.uv_transform.scale = {40.0f, 40.0f};
+  floor.uv_transform.offset = {-19.5f, -19.5f};
+  scene.add(floor, Eigen::Isometry3d::Identity());
+  ShapeSpec box = ShapeSpec::box(0.6, 0.8, 0.5, {0.9f, 0.8f, 0.7f, 1});
+  box.texture = quadrants();
+  scene.add(box, test::at(1.5, 0.4, 0.25) * Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitZ()));
+  const CameraModel c = camera(333, 217);  // rows not a multiple of four pixels long
+  Renderer renderer(c);
+  std::vector<std::uint8_t> four, one;
+  for (const double yaw : {0.0, 0.4, -1.1, 2.7}) {
+    SCOPED_TRACE(yaw);
+    const Eigen::Isometry3d T = test::cameraAt({-0.5, 0.2, 0.35}, yaw, 0.15);
+    detail::setFourPixelTexturing(true);
+    renderer.render(scene, T, four);
+    detail::setFourPixelTexturing(false);
+    renderer.render(scene, T, one);
+    detail::setFourPixelTexturing(true);
+    EXPECT_EQ(four, one);
+    EXPECT_NE(four, std::vector<std::uint8_t>(four.size(), four[0]));  // something drawn
   }
 }
 
