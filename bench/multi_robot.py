@@ -25,7 +25,6 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import time
 
 import ros_bench
@@ -161,7 +160,7 @@ def main():
     port = int(os.environ.get("BENCH_ROS_PORT", "11461"))
     env = ros_bench.ros_env(port)
     poses = scenario.circle_starts(ros_bench.WORLD, count)
-    work = tempfile.mkdtemp()
+    work = ros_bench.work_folder("bench_multi_robot_")
     parameters = simulator_parameters(poses[0], threads)
     listen = ([listener] + (["--camera"] if depth else []) + [str(WARMUP_S), str(sim_s)]
               + namespaces(count))

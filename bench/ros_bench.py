@@ -1,14 +1,25 @@
 """Helpers of the benchmark scripts that run ROS processes: the devel space's environment
 with a private master port, roscore, the Burger's URDF, child processes that end with the
-script, and a node's resident memory."""
+script, a work folder that goes with it, and a node's resident memory."""
+import atexit
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WORLD = os.path.join(ROOT, "src/turtlebot3_gazebo/worlds/roundTrack.world")
 BURGER_XACRO = os.path.join(ROOT, "turtlebot3_description/urdf/turtlebot3_burger.urdf.xacro")
+
+
+def work_folder(prefix="bench_"):
+    """A fresh folder under the system's temp folder, removed with everything in it when
+    the script ends (sys.exit included)."""
+    path = tempfile.mkdtemp(prefix=prefix)
+    atexit.register(shutil.rmtree, path, ignore_errors=True)
+    return path
 
 
 def devel_dir():

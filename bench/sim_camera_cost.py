@@ -8,7 +8,9 @@ phases divided by the frames sent.
 Usage: bench/sim_camera_cost.py [SIM_SECONDS_PER_PHASE]   (default 10; needs a built
        devel space: BENCH_DEVEL=/path/to/devel, else ./devel; BENCH_ROS_PORT, default 11458)
 """
+import atexit
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -70,7 +72,8 @@ def main():
     for key, value in env.items():
         os.environ[key] = value
     sys.path[:0] = [p for p in env.get("PYTHONPATH", "").split(":") if p]
-    work = tempfile.mkdtemp()
+    work = tempfile.mkdtemp(prefix="bench_camera_cost_")
+    atexit.register(shutil.rmtree, work, ignore_errors=True)
     procs = []
     try:
         procs.append(subprocess.Popen(["roscore", "-p", str(port)], env=env,

@@ -12,9 +12,11 @@ Usage: bench/soak.py [--sim-hours H] [--seed N] [--port P]   (needs a built deve
 Prints one line per sim minute and a summary; exits 1 when a check failed.
 """
 import argparse
+import atexit
 import math
 import os
 import random
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -187,6 +189,7 @@ def main():
     parser.add_argument('--port', type=int, default=11463)
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix='soak_')
+    atexit.register(shutil.rmtree, work, ignore_errors=True)
     env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % args.port,
                ROS_HOSTNAME='localhost', ROS_HOME=os.path.join(work, 'ros_home'))
     os.environ.update(env)

@@ -4,7 +4,6 @@ import io
 import os
 import subprocess
 import sys
-import tempfile
 import threading
 import time
 
@@ -36,8 +35,8 @@ def test_a_gtest_entry_is_one_job_with_its_result_file_and_the_default_limit():
     assert job.limit_s == test_jobs.DEFAULT_LIMIT_S
 
 
-def test_a_rostest_names_a_result_file_per_test_and_sums_their_time_limits():
-    folder = tempfile.mkdtemp()
+def test_a_rostest_names_a_result_file_per_test_and_sums_their_time_limits(tmp_path):
+    folder = str(tmp_path)
     launch = os.path.join(folder, 'two.test')
     with open(launch, 'w') as f:
         f.write('<launch><test test-name="first" pkg="p" type="a" time-limit="90"/>'
@@ -70,8 +69,8 @@ def test_jobs_start_longest_first_by_the_last_run_and_by_kind_when_never_measure
     assert [j.name for j in ordered] == ['long', 'new_rostest', 'new_gtest', 'short']
 
 
-def test_durations_round_trip_and_a_bad_file_is_no_history():
-    path = os.path.join(tempfile.mkdtemp(), 'd.json')
+def test_durations_round_trip_and_a_bad_file_is_no_history(tmp_path):
+    path = os.path.join(str(tmp_path), 'd.json')
     assert test_jobs.load_durations(path) == {}
     test_jobs.save_durations(path, {'a': 2.5})
     assert test_jobs.load_durations(path) == {'a': 2.5}
@@ -124,8 +123,8 @@ def run_jobs(folder, jobs, workers=2):
     return out.getvalue(), runner
 
 
-def test_passing_jobs_report_their_files_and_their_output_lands_in_the_log():
-    folder = tempfile.mkdtemp()
+def test_passing_jobs_report_their_files_and_their_output_lands_in_the_log(tmp_path):
+    folder = str(tmp_path)
     script = "mkdir -p $(dirname RESULT); echo 'hello from' $DISPLAY; echo '%s' > RESULT" % PASSING
     lines, runner = run_jobs(folder, [shell_job('a', script, folder), shell_job('b', script, folder)])
     assert 'ok   p/a.xml: 2 passed, 0 failed, 0 skipped' in lines
@@ -137,8 +136,8 @@ def test_passing_jobs_report_their_files_and_their_output_lands_in_the_log():
     assert os.path.isdir(os.path.join(folder, 'ros_home', 'worker1'))
 
 
-def test_a_job_over_its_limit_is_killed_with_its_children_and_counts_as_failed():
-    folder = tempfile.mkdtemp()
+def test_a_job_over_its_limit_is_killed_with_its_children_and_counts_as_failed(tmp_path):
+    folder = str(tmp_path)
     pid_file = os.path.join(folder, 'child.pid')
     # A placeholder result as rostest leaves one, then a child that would outlive the job.
     script = ("mkdir -p $(dirname RESULT); echo '%s' > RESULT; sleep 300 & echo $! > %s; wait"
@@ -166,8 +165,8 @@ def running(pid):
         return False
 
 
-def test_a_job_that_leaves_no_result_file_counts_as_failed():
-    folder = tempfile.mkdtemp()
+def test_a_job_that_leaves_no_result_file_counts_as_failed(tmp_path):
+    folder = str(tmp_path)
     lines, _ = run_jobs(folder, [shell_job('silent', 'exit 3', folder)], workers=1)
     result = os.path.join(folder, 'results', 'p', 'silent.xml')
     assert count_file(result) == {'passed': 0, 'failed': 1, 'skipped': 0}
@@ -186,8 +185,8 @@ def test_running_jobs_are_named_after_25_quiet_seconds():
     assert out.getvalue().splitlines() == ['[ 0:26] running: slow_rostest (26 s), gtest (6 s)']
 
 
-def test_a_line_per_file_of_an_ended_job_a_missing_one_named_and_the_slowest_at_the_end():
-    folder = tempfile.mkdtemp()
+def test_a_line_per_file_of_an_ended_job_a_missing_one_named_and_the_slowest_at_the_end(tmp_path):
+    folder = str(tmp_path)
     clock, out = Clock(), io.StringIO()
     progress = Progress(folder, out, clock)
     present = os.path.join(folder, 'p', 'rostest-t.xml')
@@ -210,8 +209,8 @@ def test_a_line_per_file_of_an_ended_job_a_missing_one_named_and_the_slowest_at_
                                                 '       3 s  p_gtest_g']
 
 
-def test_a_stopped_run_ends_its_running_jobs_and_x_servers():
-    folder = tempfile.mkdtemp()
+def test_a_stopped_run_ends_its_running_jobs_and_x_servers(tmp_path):
+    folder = str(tmp_path)
     stopped = []
 
     class Display(FakeDisplay):

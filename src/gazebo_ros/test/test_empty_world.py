@@ -3,6 +3,7 @@
 codes and effects as Gazebo users rely on them."""
 import math
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -39,7 +40,8 @@ class TestEmptyWorld(unittest.TestCase):
         cls.world = rospy.ServiceProxy('/gazebo/get_world_properties', GetWorldProperties)
         cls.model_state = rospy.ServiceProxy('/gazebo/get_model_state', GetModelState)
         cls.joint = rospy.ServiceProxy('/gazebo/get_joint_properties', GetJointProperties)
-        cls.tmp = tempfile.mkdtemp()
+        cls.tmp = tempfile.mkdtemp(prefix='gazebo_ros_empty_world_')
+        cls.addClassCleanup(shutil.rmtree, cls.tmp, ignore_errors=True)
         cls.urdf = os.path.join(cls.tmp, 'probe.urdf')
         with open(cls.urdf, 'w') as out:
             out.write(overlay_workspace.ROBOT_URDF)

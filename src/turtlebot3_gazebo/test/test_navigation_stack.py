@@ -8,6 +8,7 @@ NAVIGATION_TEST_FIGURES names a folder to keep the figures and the saved map in.
 """
 import json
 import os
+import shutil
 import subprocess
 import tempfile
 import unittest
@@ -23,8 +24,10 @@ def missing(packages):
 
 class TestNavigationStack(unittest.TestCase):
     def setUp(self):
-        self.folder = os.environ.get('NAVIGATION_TEST_FIGURES') or tempfile.mkdtemp(
-            prefix='navigation_figures_')
+        self.folder = os.environ.get('NAVIGATION_TEST_FIGURES')
+        if not self.folder:  # figures asked for are kept, others go with the test
+            self.folder = tempfile.mkdtemp(prefix='navigation_figures_')
+            self.addCleanup(shutil.rmtree, self.folder, ignore_errors=True)
 
     def run_rostest(self, test_file, packages):
         absent = missing(packages)

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -65,9 +66,36 @@ std::vector<Triangle> cylinderTriangles(double radius, double length, int segmen
   return out;
 }
 
+namespace {
+
+/// The folders makeTempDir() made, removed with everything in them when the program ends.
+class MadeFolders {
+ public:
+  ~MadeFolders() {
+    std::error_code ignored;
+    for (const std::string& path : paths_) std::filesystem::remove_all(path, ignored);
+  }
+  void add(const std::string& path) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    paths_.push_back(path);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> paths_;
+};
+
+MadeFolders& madeFolders() {
+  static MadeFolders folders;
+  return folders;
+}
+
+}  // namespace
+
 std::string makeTempDir() {
   std::string pattern = (std::filesystem::temp_directory_path() / "bullet_sim_mesh_XXXXXX").string();
   if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed for " + pattern);
+  madeFolders().add(pattern);
   return pattern;
 }
 

@@ -20,7 +20,8 @@ std::vector<Triangle> boxTriangles(const Eigen::Vector3d& size,
 /// A closed cylinder along z centred on the origin, `segments` facets around.
 std::vector<Triangle> cylinderTriangles(double radius, double length, int segments);
 
-/// A fresh empty folder under the system's temp folder.
+/// A fresh empty folder under the system's temp folder, removed with everything in it
+/// when the test program ends.
 std::string makeTempDir();
 void writeText(const std::string& path, const std::string& text);
 

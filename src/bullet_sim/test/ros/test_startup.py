@@ -6,6 +6,7 @@ factor (which would bring the first lidar scan, due at 0.2 s of sim time, earlie
 time than Gazebo gives it)."""
 import os
 import re
+import shutil
 import signal
 import subprocess
 import tempfile
@@ -31,7 +32,9 @@ def world_of_boxes(path, count):
 
 class Startup(unittest.TestCase):
     def test_sim_time_starts_with_the_first_step(self):
-        world = os.path.join(tempfile.mkdtemp(), "boxes.world")
+        folder = tempfile.mkdtemp(prefix="bullet_sim_startup_")
+        self.addCleanup(shutil.rmtree, folder, ignore_errors=True)
+        world = os.path.join(folder, "boxes.world")
         world_of_boxes(world, MODELS)
         node = find_node("bullet_sim", "bullet_sim_node")[0]
         process = subprocess.Popen([node, "__name:=startup", "_world_file:=" + world,

@@ -3,6 +3,7 @@
 on files written here and on distances worked out by hand."""
 import math
 import os
+import shutil
 import sys
 import tempfile
 import unittest
@@ -35,6 +36,7 @@ WALL_DAE = '''<?xml version="1.0"?>
 class GazeboTruth(unittest.TestCase):
     def setUp(self):
         self.dir = tempfile.mkdtemp(prefix='gazebo_truth_')
+        self.addCleanup(shutil.rmtree, self.dir, ignore_errors=True)
 
     def write(self, name, text):
         path = os.path.join(self.dir, name)
