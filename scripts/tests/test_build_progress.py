@@ -4,7 +4,6 @@ import io
 import os
 import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import build_progress  # noqa: E402
@@ -60,8 +59,8 @@ def test_a_long_compile_is_reported_after_25_quiet_seconds():
         '[ 1:21] building bullet_sim: 2 files compiled so far, make at 55%']
 
 
-def test_the_test_build_keeps_the_whole_output_and_its_status():
-    folder = tempfile.mkdtemp()
+def test_the_test_build_keeps_the_whole_output_and_its_status(tmp_path):
+    folder = str(tmp_path)
     log = os.path.join(folder, 'build.log')
     script = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                           'test_build.py')

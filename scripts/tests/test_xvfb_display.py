@@ -3,7 +3,6 @@ of its own that accepts clients, and stopping one leaves the other serving."""
 import os
 import subprocess
 import sys
-import tempfile
 import threading
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -15,8 +14,8 @@ def screen_size(name):
                           capture_output=True, text=True, timeout=10).stdout.split()
 
 
-def test_servers_started_together_get_displays_of_their_own():
-    folder = tempfile.mkdtemp()
+def test_servers_started_together_get_displays_of_their_own(tmp_path):
+    folder = str(tmp_path)
     displays = [Display(os.path.join(folder, 'x%d.log' % i)) for i in range(3)]
     names = []
     starters = [threading.Thread(target=lambda d=d: names.append(d.start())) for d in displays]
