@@ -9,10 +9,17 @@
 namespace bullet_sim {
 namespace {
 
-/// How long a helper spins for the next job before it sleeps.
+/// How long a helper looks for the next job before it sleeps.
 constexpr std::chrono::microseconds kSpin{200};
 
-void pause() { __builtin_ia32_pause(); }
+/// A spin-wait hint to the processor (x86's PAUSE, ARM's YIELD; nothing elsewhere).
+void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__) || defined(__arm__)
+  __asm__ __volatile__("yield");
+#endif
+}
 
 /// Waits for `done()`, spinning first, then giving the core away between looks: a thread
 /// it waits for may have been put off the core by the machine's other work.
@@ -115,7 +122,9 @@ bool StepPool::waitForJob(uint64_t seen, uint64_t* job) {
   while (!stop_.load()) {
     if (fresh()) return true;
     if (std::chrono::steady_clock::now() < spin_until) {
-      pause();
+      // Other threads that want the core get it meanwhile (the node's publishing and
+      // network threads, a subscriber on the same machine); with none, this returns at once.
+      std::this_thread::yield();
       continue;
     }
     std::unique_lock<std::mutex> lock(mutex_);

@@ -20,8 +20,9 @@ namespace bullet_sim {
 /// t + threads, ..., so that a world keeps to one core's cache from step to step, then any
 /// piece not taken yet: a helper that the machine's other work keeps off its core delays
 /// nothing but the piece it holds. Whether helpers are used at all is a HelperChoice.
-/// Between jobs the helper threads wait spinning for a short while (a step's work comes
-/// every few tens of microseconds when the simulation runs fast), then sleep.
+/// Between jobs the helper threads look for the next one for a short while (a step's work
+/// comes every few tens of microseconds when the simulation runs fast), yielding their core
+/// to any other thread that wants it between looks, then sleep.
 class StepPool {
  public:
   /// `threads` >= 1 counts the caller: threads - 1 helper threads are started.
