@@ -12,11 +12,13 @@
 // first. Prints the median time of each way per time they fall due.
 //
 // With --save-frame FILE, the last colour frame of the single camera is written to FILE
-// (binary PPM), for a look or a check of what was drawn. Warnings of the world and of the
-// renderer (a texture that could not be read, say) are printed as "warning: ..." lines.
+// (binary PPM), for a look or a check of what was drawn. With --spawn X,Y,YAW the single
+// robot starts there instead of at the round track's spawn pose (0, 0, 1.5675). Warnings
+// of the world and of the renderer (a texture that could not be read, say) are printed as
+// "warning: ..." lines.
 //
 // Usage: bullet_sim_camera_bench [--cameras N [--threads T]] [--save-frame FILE]
-//                                <robot.urdf> <world.sdf> [sim_seconds]
+//                                [--spawn X,Y,YAW] <robot.urdf> <world.sdf> [sim_seconds]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -50,11 +52,18 @@ struct Run {
   std::vector<double> cloud_ms;  ///< a depth camera's point cloud, made after its frame
 };
 
+/// Where the single robot starts: x, y (m) and yaw (rad); the round track's spawn pose by
+/// default.
+struct Start {
+  double x_m = 0, y_m = 0, yaw_rad = 1.5675;
+};
+
 Run runScenario(const bullet_sim::WorldSpec& world, const bullet_sim::RobotSpec& robot,
-                double sim_seconds, bool render) {
+                const Start& start_pose, double sim_seconds, bool render) {
   bullet_sim::Simulation sim(world, bullet_sim::SimConfig());
   bullet_sim::Pose3 spawn;
-  spawn.orientation = Eigen::AngleAxisd(1.5675, Eigen::Vector3d::UnitZ());
+  spawn.position = Eigen::Vector3d(start_pose.x_m, start_pose.y_m, 0);
+  spawn.orientation = Eigen::AngleAxisd(start_pose.yaw_rad, Eigen::Vector3d::UnitZ());
   sim.spawnRobot("robot", robot, spawn);
   bullet_sim::CameraRenderer renderer(sim);
   bullet_sim::ImageData image;
@@ -180,12 +189,18 @@ int main(int argc, char** argv) {
   int cameras = 0;
   unsigned threads = 2;
   std::string save_frame;
+  Start start;
   int arg = 1;
   bool usable = true;
   for (; arg < argc && std::strncmp(argv[arg], "--", 2) == 0; arg += 2) {
     const bool valued = arg + 1 < argc && std::atoi(argv[arg + 1]) > 0;
     if (arg + 1 < argc && std::strcmp(argv[arg], "--save-frame") == 0) {
       save_frame = argv[arg + 1];
+    } else if (arg + 1 < argc && std::strcmp(argv[arg], "--spawn") == 0) {
+      char end = 0;
+      usable = std::sscanf(argv[arg + 1], "%lf,%lf,%lf%c", &start.x_m, &start.y_m,
+                           &start.yaw_rad, &end) == 3;
+      if (!usable) break;
     } else if (valued && std::strcmp(argv[arg], "--cameras") == 0) {
       cameras = std::atoi(argv[arg + 1]);
     } else if (valued && std::strcmp(argv[arg], "--threads") == 0) {
@@ -197,8 +212,8 @@ int main(int argc, char** argv) {
   }
   if (!usable || argc - arg < 2) {
     std::fprintf(stderr,
-                 "usage: %s [--cameras N [--threads T]] [--save-frame FILE] <robot.urdf> "
-                 "<world.sdf> [sim_seconds]\n",
+                 "usage: %s [--cameras N [--threads T]] [--save-frame FILE] [--spawn X,Y,YAW] "
+                 "<robot.urdf> <world.sdf> [sim_seconds]\n",
                  argv[0]);
     return 2;
   }
@@ -211,8 +226,8 @@ int main(int argc, char** argv) {
     for (const std::string& warning : world.warnings) std::printf("warning: %s\n", warning.c_str());
     if (cameras > 0) return benchTogether(robot, world, cameras, threads, sim_seconds);
     const bullet_sim::CameraSpec& camera = robot.cameras[0];
-    const Run plain = runScenario(world, robot, sim_seconds, false);
-    const Run with_camera = runScenario(world, robot, sim_seconds, true);
+    const Run plain = runScenario(world, robot, start, sim_seconds, false);
+    const Run with_camera = runScenario(world, robot, start, sim_seconds, true);
     const std::vector<double>& ms = with_camera.frame_ms;
     if (ms.empty()) throw bullet_sim::LoadError("the camera was never due");
     for (const std::string& warning : with_camera.warnings) {
