@@ -34,7 +34,8 @@ SimulatorNode::SimulatorNode(const Config& config, const ros::NodeHandle& nh,
 SimulatorNode::SimulatorNode(const Config& config, const bullet_sim::WorldSpec& world,
                              const ros::NodeHandle& nh, const ros::NodeHandle& gazebo_nh)
     : pacer_(config.real_time_factor) {
-  logWarnings(config.world_file, world.warnings);
+  // The world's warnings name their file (and model, link) themselves.
+  for (const std::string& warning : world.warnings) ROS_WARN("%s", warning.c_str());
   bullet_sim::SimConfig sim_config;
   sim_config.physics_step_s =
       config.physics_step_s > 0 ? config.physics_step_s : world.max_step_size_s;

@@ -3,7 +3,7 @@
 begins when the world starts running. The wall time spent loading the world and
 advertising the services is not caught up by a burst of steps faster than the real-time
 factor (which would bring the first lidar scan, due at 0.2 s of sim time, earlier in wall
-time than Gazebo gives it)."""
+time than Gazebo gives it). Its warnings about the world name the world file once."""
 import os
 import re
 import shutil
@@ -30,17 +30,28 @@ def world_of_boxes(path, count):
                   % models)
 
 
+def start_node(world, *params):
+    node = find_node("bullet_sim", "bullet_sim_node")[0]
+    return subprocess.Popen([node, "__name:=startup", "_world_file:=" + world] + list(params),
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            bufsize=1)
+
+
+def stop_node(process):
+    process.send_signal(signal.SIGINT)
+    process.wait(timeout=30)
+
+
 class Startup(unittest.TestCase):
-    def test_sim_time_starts_with_the_first_step(self):
+    def temp_folder(self):
         folder = tempfile.mkdtemp(prefix="bullet_sim_startup_")
         self.addCleanup(shutil.rmtree, folder, ignore_errors=True)
-        world = os.path.join(folder, "boxes.world")
+        return folder
+
+    def test_sim_time_starts_with_the_first_step(self):
+        world = os.path.join(self.temp_folder(), "boxes.world")
         world_of_boxes(world, MODELS)
-        node = find_node("bullet_sim", "bullet_sim_node")[0]
-        process = subprocess.Popen([node, "__name:=startup", "_world_file:=" + world,
-                                    "_real_time_factor:=1", "_status_period:=0.05"],
-                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                   bufsize=1)
+        process = start_node(world, "_real_time_factor:=1", "_status_period:=0.05")
         ready, checked = None, 0
         try:
             deadline = time.monotonic() + 60
@@ -64,10 +75,33 @@ class Startup(unittest.TestCase):
                 if since_ready > 0.6:
                     break
         finally:
-            process.send_signal(signal.SIGINT)
-            process.wait(timeout=30)
+            stop_node(process)
         self.assertIsNotNone(ready, "the node never said it was ready")
         self.assertGreater(checked, 2)
+
+    def test_a_world_warning_names_the_file_once(self):
+        # A saved <state> of a model the world does not have: the load goes on, with a
+        # warning that names the file and the model.
+        world = os.path.join(self.temp_folder(), "stale_state.world")
+        with open(world, "w") as out:
+            out.write('<?xml version="1.0"?><sdf version="1.6"><world name="stale">'
+                      '<state world_name="stale"><model name="gone"><pose>1 2 0 0 0 0</pose>'
+                      '</model></state></world></sdf>')
+        process = start_node(world, "_real_time_factor:=1")
+        warnings = []
+        try:
+            deadline = time.monotonic() + 60
+            for line in process.stdout:
+                self.assertLess(time.monotonic(), deadline, "the node was not ready in 60 s")
+                if "WARN" in line:
+                    warnings.append(line)
+                if "physics step" in line:  # the node's "world ..." line: loaded
+                    break
+        finally:
+            stop_node(process)
+        stale = [line for line in warnings if '<model name="gone">' in line]
+        self.assertEqual(len(stale), 1, "warnings: %r" % warnings)
+        self.assertEqual(stale[0].count(world), 1, stale[0])
 
 
 if __name__ == "__main__":
