@@ -15,6 +15,8 @@ import statistics
 import subprocess
 import sys
 
+import ros_bench
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 MODES = ("running-master", "own-master")
 PROCESS = "simulator process started (gzserver, then bullet_sim_node)"
@@ -28,11 +30,6 @@ SPANS = (("roslaunch start -> simulator process started", None, PROCESS),
          ("simulator process started -> first /scan", PROCESS, LAUNCH))
 STAGE_LINE = re.compile(r"^\s+([0-9.]+|-)\s+s\s+(.*)$")
 LAUNCH_LINE = re.compile(r"^launch to first /scan \((.*)\) ([0-9.]+) s$")
-
-
-def load_average():
-    with open("/proc/loadavg") as loadavg:
-        return " ".join(loadavg.read().split()[:3])
 
 
 def run_once(devel, mode):
@@ -55,10 +52,6 @@ def run_once(devel, mode):
     return stages
 
 
-def median_range(values):
-    return "%.3f (%.3f-%.3f)" % (statistics.median(values), min(values), max(values))
-
-
 def report(mode, names, results):
     print("\n%s, median (range) in s of %d rounds" % (mode, len(results[names[0]])))
     spans = [span[0] for span in SPANS]
@@ -70,7 +63,7 @@ def report(mode, names, results):
         cells = []
         for name in names:
             values = [r[stage] for r in results[name] if stage in r]
-            cells.append(median_range(values) if values else "-")
+            cells.append(ros_bench.median_range(values) if values else "-")
         print("| %s | %s | %s |" % (stage, cells[0], cells[1]))
     for row in (LAUNCH, SPANS[2][0]):
         before, after = (statistics.median(r[row] for r in results[n]) for n in names)
@@ -86,13 +79,13 @@ def main():
     names = ("before", "after")
     devels = dict(zip(names, (args.before, args.after)))
     results = {mode: {name: [] for name in names} for mode in MODES}
-    print("load average before: %s" % load_average())
+    print("load average before: %s" % ros_bench.load_average())
     for round_index in range(args.rounds):
         order = names if round_index % 2 == 0 else names[::-1]
         for mode in MODES:
             for name in order:
                 results[mode][name].append(run_once(devels[name], mode))
-    print("load average after: %s" % load_average())
+    print("load average after: %s" % ros_bench.load_average())
     for mode in MODES:
         report(mode, names, results[mode])
 

@@ -4,6 +4,7 @@ script, a work folder that goes with it, and a node's resident memory."""
 import atexit
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -20,6 +21,18 @@ def work_folder(prefix="bench_"):
     path = tempfile.mkdtemp(prefix=prefix)
     atexit.register(shutil.rmtree, path, ignore_errors=True)
     return path
+
+
+def load_average():
+    """The 1-, 5- and 15-minute load averages, as /proc/loadavg gives them."""
+    with open("/proc/loadavg") as loadavg:
+        return " ".join(loadavg.read().split()[:3])
+
+
+def median_range(values, digits=3):
+    """"median (min-max)" of `values`."""
+    return "%.*f (%.*f-%.*f)" % (digits, statistics.median(values), digits, min(values),
+                                 digits, max(values))
 
 
 def devel_dir():

@@ -194,3 +194,13 @@ def circle_starts(world_file, count, cell_m=0.05):
     poses = [(0.0, 0.0, SPAWN_YAW_RAD)]
     poses += [(cx + CIRCLE_RADIUS_M, cy, math.pi / 2) for cx, cy in centres[1:]]
     return poses
+
+
+
+def write_circle_starts(world_file, count, path):
+    """Writes circle_starts(world_file, count) to `path`, an "x y yaw" line per robot (the
+    poses file of bullet_sim_bench and multi_robot.py); returns `path`."""
+    with open(path, "w") as f:
+        for x, y, yaw in circle_starts(world_file, count):
+            f.write("%r %r %r\n" % (x, y, yaw))
+    return path

@@ -97,3 +97,11 @@ def test_sixteen_circles_clear_of_walls_and_of_each_other():
     for i, a in enumerate(centres):
         for b in centres[i + 1:]:
             assert math.hypot(a[0] - b[0], a[1] - b[1]) >= 2 * (radius + scenario.ROBOT_REACH_M)
+
+
+def test_the_poses_file_reads_back_as_the_poses(tmp_path):
+    poses = scenario.circle_starts(WORLD, 4)
+    path = scenario.write_circle_starts(WORLD, 4, str(tmp_path / "starts.txt"))
+    with open(path) as f:
+        read = [tuple(float(v) for v in line.split()) for line in f]
+    assert read == poses
