@@ -196,7 +196,6 @@ def circle_starts(world_file, count, cell_m=0.05):
     return poses
 
 
-
 def write_circle_starts(world_file, count, path):
     """Writes circle_starts(world_file, count) to `path`, an "x y yaw" line per robot (the
     poses file of bullet_sim_bench and multi_robot.py); returns `path`."""
