@@ -245,11 +245,22 @@ TEST(BadWorld, NegativeCylinderLength) {
 }
 
 TEST(BadWorld, NanFrictionNamesModelLinkCollisionAndValue) {
-  // libsdformat refuses a negative <mu> itself, but takes "nan".
   EXPECT_EQ(worldErrorOf("world_nan_friction.world"),
             fixture("world_nan_friction.world") +
                 ": model 'floor' link 'link' collision 'collision': "
                 "<surface><friction><ode><mu>: 'nan' is not a friction coefficient >= 0");
+}
+
+TEST(BadWorld, NegativeFrictionNamesModelLinkCollisionAndValue) {
+  const std::string error = loadErrorOf([] {
+    loadWorldString(R"(<sdf version="1.6"><world name="w"><model name="floor">
+        <static>true</static><link name="link"><collision name="collision"><geometry><box>
+        <size>1 1 1</size></box></geometry><surface><friction><ode><mu>-0.2</mu></ode>
+        </friction></surface></collision></link></model></world></sdf>)",
+                    "w.world");
+  });
+  EXPECT_EQ(error, "w.world: model 'floor' link 'link' collision 'collision': "
+                   "<surface><friction><ode><mu>: '-0.2' is not a friction coefficient >= 0");
 }
 
 TEST(BadWorld, NanFrictionOfASpawnedSdfModel) {

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """/gazebo/world_markers against the world file it was made from: the file is read here
-with ElementTree (not libsdformat, which the node uses), and every wall must be one cube
+with ElementTree (not the simulator's SDF reader), and every wall must be one cube
 marker in frame world whose pose and size match within 1 mm and whose colour is the
 visual's diffuse colour."""
 import math

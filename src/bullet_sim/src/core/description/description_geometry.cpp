@@ -1,7 +1,5 @@
 #include "description/description_geometry.h"
 
-#include <sdf/sdf.hh>
-
 namespace bullet_sim {
 
 Geometry geometryOf(const urdf::Geometry& geometry) {
@@ -21,33 +19,6 @@ Geometry geometryOf(const urdf::Geometry& geometry) {
   }
   const auto& m = static_cast<const urdf::Mesh&>(geometry);
   return Geometry::mesh(m.filename, Eigen::Vector3d(m.scale.x, m.scale.y, m.scale.z));
-}
-
-std::optional<Geometry> geometryOf(const sdf::Geometry& geometry) {
-  switch (geometry.Type()) {
-    case sdf::GeometryType::BOX: {
-      const auto size = geometry.BoxShape()->Size();
-      return Geometry::box(size.X(), size.Y(), size.Z());
-    }
-    case sdf::GeometryType::CYLINDER:
-      return Geometry::cylinder(geometry.CylinderShape()->Radius(),
-                                geometry.CylinderShape()->Length());
-    case sdf::GeometryType::SPHERE:
-      return Geometry::sphere(geometry.SphereShape()->Radius());
-    case sdf::GeometryType::PLANE: {
-      const sdf::Plane& plane = *geometry.PlaneShape();
-      const auto n = plane.Normal();
-      return Geometry::plane(plane.Size().X(), plane.Size().Y(),
-                             Eigen::Vector3d(n.X(), n.Y(), n.Z()).normalized());
-    }
-    case sdf::GeometryType::MESH: {
-      const sdf::Mesh& mesh = *geometry.MeshShape();
-      const auto scale = mesh.Scale();
-      return Geometry::mesh(mesh.Uri(), Eigen::Vector3d(scale.X(), scale.Y(), scale.Z()));
-    }
-    default:
-      return std::nullopt;
-  }
 }
 
 urdf::GeometrySharedPtr urdfGeometry(const Geometry& geometry) {

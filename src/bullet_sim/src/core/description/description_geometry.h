@@ -3,7 +3,6 @@
 
 #include <optional>
 
-#include <sdf/Geometry.hh>
 #include <urdf_model/link.h>
 
 #include "bullet_sim/description/robot_spec.h"
@@ -13,11 +12,6 @@ namespace bullet_sim {
 /// The Geometry of a URDF <geometry> as urdfdom read it: box, cylinder, sphere, or mesh
 /// (its filename as written and its scale).
 Geometry geometryOf(const urdf::Geometry& geometry);
-
-/// The Geometry of an SDF <geometry> (box, cylinder, sphere, plane with its unit normal,
-/// mesh with its <uri> and <scale>); none for the kinds the simulator does not have
-/// (capsule, ellipsoid, heightmap, polyline, empty).
-std::optional<Geometry> geometryOf(const sdf::Geometry& geometry);
 
 /// The urdfdom geometry of a box, cylinder, sphere or mesh (a plane has none in URDF:
 /// null), as a movable SDF model's links are written into its URDF model.

@@ -16,19 +16,6 @@ bool pathExists(const fs::path& path) {
   return fs::exists(path, ec);
 }
 
-/// The <uri>s of the visual's <material><script>, as written.
-std::vector<std::string> scriptUris(const sdf::Material& material) {
-  std::vector<std::string> uris;
-  const sdf::ElementPtr element = material.Element();
-  if (!element || !element->HasElement("script")) return uris;
-  const sdf::ElementPtr script = element->GetElement("script");
-  for (sdf::ElementPtr uri = script->HasElement("uri") ? script->GetElement("uri") : nullptr; uri;
-       uri = uri->GetNextElement("uri")) {
-    uris.push_back(uri->Get<std::string>());
-  }
-  return uris;
-}
-
 /// The UV transform of an OGRE texture_unit: OGRE scales about the image centre
 /// (u' = (u - 0.5) / scale + 0.5), then scrolls (u' += scroll).
 TextureRef textureOf(const ScriptMaterial& found) {
@@ -44,12 +31,10 @@ TextureRef textureOf(const ScriptMaterial& found) {
 }
 
 /// The folder a material's relative script <uri>s start from: that of the file that
-/// defines it (`source` when libsdformat does not say), "" when that is no file.
-std::string scriptBaseDir(const sdf::ElementPtr& element, const std::string& source) {
-  const std::string defined_in = element && !element->FilePath().empty() ? element->FilePath()
-                                                                         : source;
+/// defines the visual, "" when that is no file.
+std::string scriptBaseDir(const SdfOrigin& origin) {
   std::error_code ec;
-  return fs::is_regular_file(defined_in, ec) ? fs::path(defined_in).parent_path().string() : "";
+  return fs::is_regular_file(origin.file, ec) ? fs::path(origin.file).parent_path().string() : "";
 }
 
 /// A script material's colour: its pass's diffuse, else its ambient, else white.
@@ -60,15 +45,14 @@ Eigen::Vector4f scriptColour(const OgreMaterial& m) {
 /// The script material of `material`'s script name, looked up in its <uri>s and
 /// GAZEBO_RESOURCE_PATH; nullopt, with a warning unless it is a stock material, when no
 /// script defines it.
-std::optional<ScriptMaterial> lookUpScript(const sdf::Material& material,
-                                           const std::string& where, const std::string& source,
-                                           const UriResolver& resolver,
+std::optional<ScriptMaterial> lookUpScript(const SdfMaterial& material, const SdfOrigin& origin,
+                                           const std::string& where, const UriResolver& resolver,
                                            std::vector<std::string>* warnings) {
-  const std::string name = material.ScriptName();
+  const std::string& name = material.script_name;
   const std::vector<std::string> resource_paths = gazeboResourcePaths();
-  const std::string base_dir = scriptBaseDir(material.Element(), source);
+  const std::string base_dir = scriptBaseDir(origin);
   std::vector<std::string> uri_paths;
-  for (const std::string& uri : scriptUris(material)) {
+  for (const std::string& uri : material.script_uris) {
     const std::string path = resolveScriptUri(uri, base_dir, resolver, resource_paths);
     if (!path.empty()) uri_paths.push_back(path);
   }
@@ -111,17 +95,15 @@ std::string resolveScriptUri(const std::string& uri, const std::string& base_dir
   return pathExists(relative) ? relative.string() : "";
 }
 
-Appearance visualAppearance(const sdf::Visual& visual, const std::string& where,
-                            const std::string& source, const UriResolver& resolver,
-                            std::vector<std::string>* warnings) {
+Appearance visualAppearance(const SdfVisual& visual, const std::string& where,
+                            const UriResolver& resolver, std::vector<std::string>* warnings) {
   Appearance out;
   out.rgba = visualColour(visual, where, nullptr);
-  const sdf::Material* material = visual.Material();
-  if (!material || material->ScriptName().empty()) return out;
-  const std::string name = material->ScriptName();
-  const bool explicit_diffuse = material->Element() && material->Element()->HasElement("diffuse");
-  if (gazeboMaterialColour(name) && !explicit_diffuse) return out;  // a stock material
-  const auto found = lookUpScript(*material, where, source, resolver, warnings);
+  if (!visual.material || visual.material->script_name.empty()) return out;
+  const SdfMaterial& material = *visual.material;
+  const bool explicit_diffuse = material.diffuse.has_value();
+  if (gazeboMaterialColour(material.script_name) && !explicit_diffuse) return out;  // stock
+  const auto found = lookUpScript(material, visual.origin, where, resolver, warnings);
   if (!found) return out;
   if (!explicit_diffuse) out.rgba = scriptColour(found->material);
   if (found->material.texture_unit && !found->texture_path.empty()) out.texture = textureOf(*found);

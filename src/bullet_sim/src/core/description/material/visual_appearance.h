@@ -5,10 +5,10 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <sdf/sdf.hh>
 
 #include "bullet_sim/description/resource_paths.h"
 #include "bullet_sim/types.h"
+#include "description/sdf/sdf_dom.h"
 
 namespace bullet_sim {
 
@@ -21,14 +21,13 @@ struct Appearance {
 /// The appearance of `visual` as Gazebo Classic shows it. An explicit <diffuse> gives the
 /// colour; a <script> name of Gazebo's stock materials its colour (sdf_util's table); any
 /// other script name is looked up in the OGRE scripts of the <script>'s <uri>s (model://,
-/// file:// or relative to `source`'s folder, files or folders) and of GAZEBO_RESOURCE_PATH:
-/// its pass's diffuse (else ambient, else white) and its texture_unit's image, scale and
+/// file:// or relative to the folder of the file that defines the visual, files or
+/// folders) and of GAZEBO_RESOURCE_PATH: its pass's diffuse (else ambient, else white) and its texture_unit's image, scale and
 /// scroll. A name found nowhere, or a texture found nowhere, adds a warning naming it
 /// (`where` says whose visual it is) and the visual keeps a colour.
 /// @throws LoadError for a script with a syntax error (naming its file and line).
-Appearance visualAppearance(const sdf::Visual& visual, const std::string& where,
-                            const std::string& source, const UriResolver& resolver,
-                            std::vector<std::string>* warnings);
+Appearance visualAppearance(const SdfVisual& visual, const std::string& where,
+                            const UriResolver& resolver, std::vector<std::string>* warnings);
 
 /// The path a <script> <uri> names, a file or a folder: `model://NAME/rest` in NAME's model
 /// folder, `file://PATH` absolute or under a GAZEBO_RESOURCE_PATH entry, otherwise relative

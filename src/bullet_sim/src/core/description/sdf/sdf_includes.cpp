@@ -43,13 +43,13 @@ const tinyxml2::XMLElement* modelConfigRoot(const fs::path& config, tinyxml2::XM
 /// A model.config's <sdf version="..">FILE</sdf> entry.
 struct SdfEntry {
   std::pair<int, int> version{-1, -1};
-  std::string file;  ///< "" when no entry is one libsdformat reads
+  std::string file;  ///< "" when no entry is of a version the reader reads
   std::string seen;  ///< every version given, for messages ("?" for none)
 };
 
-/// The entry of the newest version that libsdformat reads, as Gazebo picks it.
+/// The entry of the newest version that the reader reads, as Gazebo picks it.
 SdfEntry newestReadableEntry(const tinyxml2::XMLElement& model) {
-  const std::pair<int, int> supported = parseVersion(sdf::SDF::Version());
+  const std::pair<int, int> supported{1, 9};
   SdfEntry best;
   for (const tinyxml2::XMLElement* s = model.FirstChildElement("sdf"); s;
        s = s->NextSiblingElement("sdf")) {
@@ -81,8 +81,8 @@ std::string modelSdfFile(const std::string& model_dir, std::string* problem) {
   if (!model) return "";
   const SdfEntry entry = newestReadableEntry(*model);
   if (entry.file.empty()) {
-    *problem = config.string() + ": no <sdf version=\"..\"> entry that libsdformat " +
-               sdf::SDF::Version() + " reads (versions given: " +
+    *problem = config.string() + ": no <sdf version=\"..\"> entry of a version the " +
+               "simulator reads (1.0 to 1.9; versions given: " +
                (entry.seen.empty() ? "none" : entry.seen) + ")";
     return "";
   }
@@ -96,41 +96,50 @@ std::string modelSdfFile(const std::string& model_dir, std::string* problem) {
   return file.string();
 }
 
-IncludeResolver::IncludeResolver(const UriResolver& resolver, std::string base_dir)
-    : resolver_(resolver), base_dir_(std::move(base_dir)) {}
+namespace {
 
-sdf::ParserConfig IncludeResolver::parserConfig() {
-  sdf::ParserConfig config;
-  config.SetFindCallback([this](const std::string& uri) { return find(uri); });
-  return config;
-}
-
-std::string IncludeResolver::find(const std::string& uri) {
-  if (uri.compare(0, 8, "model://") == 0) return findModelUri(uri);
-  std::vector<std::string> searched;
-  const std::string path = resolver_.resolve(uri, base_dir_, &searched);
-  if (path.empty()) failures_.push_back("<include> <uri>" + uri + "</uri>: no such file");
-  return path;
-}
-
-std::string IncludeResolver::findModelUri(const std::string& uri) {
-  // model://NAME names a model folder, which may sit deeper (model://set/part) as Gazebo
-  // allows; model://NAME/file.sdf names a file in one.
+/// model://NAME names a model folder, which may sit deeper (model://set/part) as Gazebo
+/// allows; model://NAME/file.sdf names a file in one.
+std::string resolveModelUri(const std::string& uri, const UriResolver& resolver,
+                            std::string* problem) {
   const std::string rest = uri.substr(8);
   std::vector<std::string> searched;
-  std::string dir = resolver_.findModel(rest, &searched);
+  std::string dir = resolver.findModel(rest, &searched);
   if (dir.empty() && isBuiltin(rest)) dir = (fs::path(builtinModelsDir()) / rest).string();
   if (dir.empty()) {
-    const std::string file = resolver_.resolve(uri, "");
+    const std::string file = resolver.resolve(uri, "");
     if (!file.empty()) return file;
-    failures_.push_back("<include> <uri>" + uri + "</uri>: model '" + rest +
-                        "' not found in the model folders (GAZEBO_MODEL_PATH): " +
-                        join(searched) + "; built in are only sun and ground_plane");
+    *problem = "<uri>" + uri + "</uri>: model '" + rest +
+               "' not found in the model folders (GAZEBO_MODEL_PATH): " + join(searched) +
+               "; built in are only sun and ground_plane";
     return "";
   }
-  std::string problem;
-  const std::string file = modelSdfFile(dir, &problem);
-  if (file.empty()) failures_.push_back("<include> <uri>" + uri + "</uri>: " + problem);
+  const std::string file = modelSdfFile(dir, problem);
+  if (file.empty()) *problem = "<uri>" + uri + "</uri>: " + *problem;
+  return file;
+}
+
+}  // namespace
+
+std::string resolveIncludeUri(const std::string& uri, const std::string& base_dir,
+                              const UriResolver& resolver, std::string* problem) {
+  if (uri.compare(0, 8, "model://") == 0) return resolveModelUri(uri, resolver, problem);
+  if (uri.compare(0, 10, "package://") == 0) {
+    const std::string file = resolver.resolve(uri, base_dir);
+    if (file.empty()) *problem = "<uri>" + uri + "</uri>: no such file";
+    return file;
+  }
+  fs::path path(uri.compare(0, 7, "file://") == 0 ? uri.substr(7) : uri);
+  if (path.is_relative() && !base_dir.empty()) path = fs::path(base_dir) / path;
+  std::error_code ec;
+  if (fs::is_regular_file(path, ec)) return path.string();
+  if (!fs::is_directory(path, ec)) {
+    *problem = "<uri>" + uri + "</uri>: no such file or model folder (" +
+               path.string() + ")";
+    return "";
+  }
+  const std::string file = modelSdfFile(path.string(), problem);
+  if (file.empty()) *problem = "<uri>" + uri + "</uri>: " + *problem;
   return file;
 }
 

@@ -4,8 +4,6 @@
 #include <string>
 #include <vector>
 
-#include <sdf/sdf.hh>
-
 #include "bullet_sim/description/resource_paths.h"
 
 namespace bullet_sim {
@@ -15,33 +13,18 @@ namespace bullet_sim {
 std::string builtinModelsDir();
 
 /// The SDF file a model folder's model.config names: the <sdf version=".."> entry with
-/// the highest version libsdformat reads. Returns "" and sets `problem` (missing or
+/// the highest version the reader reads (1.9). Returns "" and sets `problem` (missing or
 /// malformed model.config, no usable entry, missing file).
 std::string modelSdfFile(const std::string& model_dir, std::string* problem);
 
-/// Answers libsdformat's questions for the URIs of <include> elements (model://NAME,
-/// relative and absolute paths) through a UriResolver, and remembers, for every URI it
-/// could not answer, why: libsdformat itself only says "Unable to find uri".
-class IncludeResolver {
- public:
-  /// `base_dir`: folder of the file being loaded, for relative URIs.
-  IncludeResolver(const UriResolver& resolver, std::string base_dir);
-  IncludeResolver(const IncludeResolver&) = delete;
-  IncludeResolver& operator=(const IncludeResolver&) = delete;
-
-  /// A parser configuration whose find callback asks this object (which must outlive it).
-  sdf::ParserConfig parserConfig();
-  /// One message per URI that could not be resolved, in the order asked.
-  const std::vector<std::string>& failures() const { return failures_; }
-
- private:
-  std::string find(const std::string& uri);
-  std::string findModelUri(const std::string& uri);
-
-  const UriResolver& resolver_;
-  std::string base_dir_;
-  std::vector<std::string> failures_;
-};
+/// The SDF file an <include> <uri> names: model://NAME (a model folder, found through
+/// `resolver`'s model paths, which may sit deeper as model://set/part; the built-in sun and
+/// ground_plane last) or model://NAME/file.sdf, a relative path (from `base_dir`, the folder
+/// of the including file), file:// or an absolute path, to a model folder or to a file.
+/// Returns "" and sets `problem` (the URI, the folders searched, or what is wrong with the
+/// model folder's model.config) when it names nothing readable.
+std::string resolveIncludeUri(const std::string& uri, const std::string& base_dir,
+                              const UriResolver& resolver, std::string* problem);
 
 }  // namespace bullet_sim
 

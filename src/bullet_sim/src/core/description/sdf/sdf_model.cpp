@@ -19,24 +19,24 @@ namespace {
 /// a RobotSpec: links, joints and their visuals' textures and meshes, plugins warned about.
 class SdfModelConverter {
  public:
-  SdfModelConverter(const sdf::Model& model, const std::string& source,
+  SdfModelConverter(const SdfModel& model, const std::string& source,
                     const UriResolver& resolver)
       : model_(model),
-        where_(source + ": model '" + model.Name() + "'"),
+        where_(source + ": model '" + model.name + "'"),
         resolver_(resolver),
-        links_(where_, source, resolver, &spec_) {}
+        links_(where_, resolver, &spec_) {}
 
   RobotSpec convert() {
     entries_ = ModelEntries::of(model_, where_, &spec_.warnings);
-    const auto canonical = model_.CanonicalLinkAndRelativeName();
-    if (!canonical.first) throw LoadError(where_ + ": has no link");
-    const std::string root = entries_.treeRoot(canonical.second);
+    const auto canonical = model_.canonicalLink();
+    if (!canonical) throw LoadError(where_ + ": has no link");
+    const std::string root = entries_.treeRoot(canonical->first);
     urdf_ = std::make_shared<urdf::ModelInterface>();
-    urdf_->name_ = model_.Name();
+    urdf_->name_ = model_.name;
     addSubtree(root);
-    warnUnjoined(canonical.second);
+    warnUnjoined(canonical->first);
     initTree();
-    spec_.name = model_.Name();
+    spec_.name = model_.name;
     spec_.urdf = urdf_;
     spec_.root_link_in_model = toPose3(entries_.link(root, where_).T_model_link);
     addVisuals();
@@ -98,17 +98,14 @@ class SdfModelConverter {
     }
   }
 
-  void warnAboutPlugins(const sdf::Model& m) {
-    const sdf::ElementPtr e = m.Element();
-    for (sdf::ElementPtr p = e ? e->FindElement("plugin") : nullptr; p;
-         p = p->GetNextElement("plugin")) {
-      spec_.warnings.push_back(where_ + ": plugin '" + p->Get<std::string>("filename") +
-                               "' is not supported: ignored");
+  void warnAboutPlugins(const SdfModel& m) {
+    for (const SdfPlugin& p : m.plugins) {
+      spec_.warnings.push_back(where_ + ": plugin '" + p.filename + "' is not supported: ignored");
     }
-    for (uint64_t i = 0; i < m.ModelCount(); ++i) warnAboutPlugins(*m.ModelByIndex(i));
+    for (const SdfModel& nested : m.models) warnAboutPlugins(nested);
   }
 
-  const sdf::Model& model_;
+  const SdfModel& model_;
   std::string where_;
   const UriResolver& resolver_;
   RobotSpec spec_;
@@ -119,21 +116,20 @@ class SdfModelConverter {
 
 }  // namespace
 
-RobotSpec parseSdfModel(const sdf::Model& model, const std::string& source,
+RobotSpec parseSdfModel(const SdfModel& model, const std::string& source,
                         const UriResolver& resolver) {
   return SdfModelConverter(model, source, resolver).convert();
 }
 
-bool isAnchoredToWorld(const sdf::Model& model, std::string* joint_name, bool* fixed) {
-  for (uint64_t i = 0; i < model.JointCount(); ++i) {
-    const sdf::Joint& j = *model.JointByIndex(i);
-    if (j.ParentLinkName() != "world") continue;
-    if (joint_name) *joint_name = j.Name();
-    if (fixed) *fixed = j.Type() == sdf::JointType::FIXED;
+bool isAnchoredToWorld(const SdfModel& model, std::string* joint_name, bool* fixed) {
+  for (const SdfJoint& j : model.joints) {
+    if (j.parent != "world") continue;
+    if (joint_name) *joint_name = j.name;
+    if (fixed) *fixed = j.type == "fixed";
     return true;
   }
-  for (uint64_t i = 0; i < model.ModelCount(); ++i) {
-    if (isAnchoredToWorld(*model.ModelByIndex(i), joint_name, fixed)) return true;
+  for (const SdfModel& nested : model.models) {
+    if (isAnchoredToWorld(nested, joint_name, fixed)) return true;
   }
   return false;
 }

@@ -3,21 +3,20 @@
 
 #include <string>
 
-#include <sdf/sdf.hh>
-
 #include "bullet_sim/description/robot_spec.h"
+#include "description/sdf/sdf_dom.h"
 
 namespace bullet_sim {
 
-/// Converts a loaded SDF model into a RobotSpec (see parseSdfModelString). `source` names
+/// Converts a read SDF model into a RobotSpec (see parseSdfModelString). `source` names
 /// the file in messages. Joints to the world are left out (see isAnchoredToWorld).
 /// @throws LoadError for geometry a movable body cannot have, or a model without links.
-RobotSpec parseSdfModel(const sdf::Model& model, const std::string& source,
+RobotSpec parseSdfModel(const SdfModel& model, const std::string& source,
                         const UriResolver& resolver);
 
 /// Whether a joint of the model (or of a nested model) has the world as its parent: such a
 /// model does not move as a whole, and is simulated as static.
-bool isAnchoredToWorld(const sdf::Model& model, std::string* joint_name = nullptr,
+bool isAnchoredToWorld(const SdfModel& model, std::string* joint_name = nullptr,
                        bool* fixed = nullptr);
 
 }  // namespace bullet_sim

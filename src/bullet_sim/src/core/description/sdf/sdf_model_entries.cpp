@@ -3,8 +3,6 @@
 #include <set>
 
 #include "bullet_sim/errors.h"
-#include "description/sdf/sdf_urdf_convert.h"
-#include "description/sdf/sdf_util.h"
 
 namespace bullet_sim {
 namespace {
@@ -16,33 +14,21 @@ std::string scoped(const std::string& prefix, const std::string& name) {
 }
 
 /// Joint `j` of a model whose links are named under `prefix` and posed at T_top_m.
-JointEntry jointEntry(const sdf::Joint& j, const std::string& prefix, const Isometry3d& T_top_m) {
-  JointEntry e{&j, scoped(prefix, j.Name()), "", "", T_top_m, {0, 0, 1}};
-  std::string parent = j.ParentLinkName(), child = j.ChildLinkName();
-  j.ResolveParentLink(parent);
-  j.ResolveChildLink(child);
-  e.parent = parent == "world" ? parent : scoped(prefix, parent);
-  e.child = scoped(prefix, child);
-  ignition::math::Pose3d pose;
-  if (j.SemanticPose().Resolve(pose, "__model__").empty()) {
-    e.T_model_joint = T_top_m * sdfToIsometry(pose);
-  }
-  ignition::math::Vector3d xyz(0, 0, 1);
-  if (j.Axis(0) && j.Axis(0)->ResolveXyz(xyz, "__model__").empty()) {
-    e.axis_in_model = T_top_m.linear() * Eigen::Vector3d(xyz.X(), xyz.Y(), xyz.Z());
-  }
+JointEntry jointEntry(const SdfJoint& j, const std::string& prefix, const Isometry3d& T_top_m) {
+  JointEntry e{&j, scoped(prefix, j.name), "", "", T_top_m * j.T_model_joint, {0, 0, 1}};
+  e.parent = j.parent == "world" ? j.parent : scoped(prefix, j.parent);
+  e.child = scoped(prefix, j.child);
+  if (j.axis) e.axis_in_model = T_top_m.linear() * j.axis->xyz_in_model;
   return e;
 }
 
-void collect(const sdf::Model& m, const std::string& prefix, const Isometry3d& T_top_m,
+void collect(const SdfModel& m, const std::string& prefix, const Isometry3d& T_top_m,
              const std::string& where, ModelEntries* entries, std::vector<std::string>* warnings) {
-  for (uint64_t i = 0; i < m.LinkCount(); ++i) {
-    const sdf::Link& l = *m.LinkByIndex(i);
-    entries->links.push_back(
-        {&l, scoped(prefix, l.Name()), T_top_m * sdfToIsometry(poseInParent(l))});
+  for (const SdfLink& l : m.links) {
+    entries->links.push_back({&l, scoped(prefix, l.name), T_top_m * l.T_model_link});
   }
-  for (uint64_t i = 0; i < m.JointCount(); ++i) {
-    const JointEntry e = jointEntry(*m.JointByIndex(i), prefix, T_top_m);
+  for (const SdfJoint& j : m.joints) {
+    const JointEntry e = jointEntry(j, prefix, T_top_m);
     if (e.parent == "world") {
       warnings->push_back(where + ": joint '" + e.name + "' to the world is left out: " +
                           "the model moves freely");
@@ -50,16 +36,15 @@ void collect(const sdf::Model& m, const std::string& prefix, const Isometry3d& T
     }
     entries->joints.push_back(e);
   }
-  for (uint64_t i = 0; i < m.ModelCount(); ++i) {
-    const sdf::Model& nested = *m.ModelByIndex(i);
-    collect(nested, scoped(prefix, nested.Name()),
-            T_top_m * sdfToIsometry(poseInParent(nested)), where, entries, warnings);
+  for (const SdfModel& nested : m.models) {
+    collect(nested, scoped(prefix, nested.name), T_top_m * nested.T_parent_model, where,
+            entries, warnings);
   }
 }
 
 }  // namespace
 
-ModelEntries ModelEntries::of(const sdf::Model& model, const std::string& where,
+ModelEntries ModelEntries::of(const SdfModel& model, const std::string& where,
                               std::vector<std::string>* warnings) {
   ModelEntries entries;
   collect(model, "", Isometry3d::Identity(), where, &entries, warnings);

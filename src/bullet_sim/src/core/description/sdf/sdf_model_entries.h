@@ -5,14 +5,15 @@
 #include <vector>
 
 #include <Eigen/Geometry>
-#include <sdf/sdf.hh>
+
+#include "description/sdf/sdf_dom.h"
 
 namespace bullet_sim {
 
 /// A link of the model or of one of its nested models, with its scoped name ("nested::link")
 /// and pose in the top model's frame.
 struct LinkEntry {
-  const sdf::Link* link;
+  const SdfLink* link;
   std::string name;
   Eigen::Isometry3d T_model_link;
 };
@@ -20,7 +21,7 @@ struct LinkEntry {
 /// A joint of the model or of one of its nested models, with scoped names, its pose and
 /// axis in the top model's frame.
 struct JointEntry {
-  const sdf::Joint* joint;
+  const SdfJoint* joint;
   std::string name, parent, child;
   Eigen::Isometry3d T_model_joint;
   Eigen::Vector3d axis_in_model{0, 0, 1};
@@ -33,7 +34,7 @@ struct ModelEntries {
 
   /// Every link and joint of `model`, posed in its frame. A joint to the world is left out,
   /// with a warning naming `where` and the joint.
-  static ModelEntries of(const sdf::Model& model, const std::string& where,
+  static ModelEntries of(const SdfModel& model, const std::string& where,
                          std::vector<std::string>* warnings);
 
   /// @throws LoadError naming `where` when there is no link `name`.

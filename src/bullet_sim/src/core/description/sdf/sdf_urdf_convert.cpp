@@ -1,13 +1,6 @@
 #include "description/sdf/sdf_urdf_convert.h"
 
-#include "description/robot_plan.h"
-#include "description/sdf/sdf_util.h"
-
 namespace bullet_sim {
-
-Eigen::Isometry3d sdfToIsometry(const ignition::math::Pose3d& p) {
-  return toIsometry(toPose(p));
-}
 
 urdf::Pose toUrdfPose(const Eigen::Isometry3d& T) {
   const Eigen::Quaterniond q(T.linear());

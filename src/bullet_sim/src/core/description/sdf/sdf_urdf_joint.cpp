@@ -12,40 +12,36 @@ using Eigen::Isometry3d;
 /// SDF writes an unlimited revolute joint as limits beyond +-1e16.
 constexpr double kUnlimited = 1e15;
 
-urdf::JointLimitsSharedPtr limitsOf(const sdf::JointAxis& axis) {
+urdf::JointLimitsSharedPtr limitsOf(const SdfJointAxis& axis) {
   auto l = std::make_shared<urdf::JointLimits>();
-  l->lower = axis.Lower();
-  l->upper = axis.Upper();
-  l->effort = axis.Effort();
-  l->velocity = axis.MaxVelocity();
+  l->lower = axis.lower;
+  l->upper = axis.upper;
+  l->effort = axis.effort;
+  l->velocity = axis.velocity;
   return l;
 }
 
 /// The URDF type and limits of `j`; an unsupported type is held fixed, with a warning.
 void setType(const JointEntry& j, const std::string& where, urdf::Joint* joint,
              std::vector<std::string>* warnings) {
-  const sdf::JointAxis* axis = j.joint->Axis(0);
-  switch (j.joint->Type()) {
-    case sdf::JointType::FIXED:
-      joint->type = urdf::Joint::FIXED;
-      break;
-    case sdf::JointType::CONTINUOUS:
-      joint->type = urdf::Joint::CONTINUOUS;
-      break;
-    case sdf::JointType::REVOLUTE:
-      joint->type = axis && (axis->Lower() > -kUnlimited || axis->Upper() < kUnlimited)
-                        ? urdf::Joint::REVOLUTE
-                        : urdf::Joint::CONTINUOUS;
-      if (joint->type == urdf::Joint::REVOLUTE) joint->limits = limitsOf(*axis);
-      break;
-    case sdf::JointType::PRISMATIC:
-      joint->type = urdf::Joint::PRISMATIC;
-      if (axis) joint->limits = limitsOf(*axis);
-      break;
-    default:
-      warnings->push_back(where + ": joint '" + j.name + "': type not supported " +
-                          "(revolute, continuous, prismatic, fixed are): held fixed");
-      joint->type = urdf::Joint::FIXED;
+  const std::optional<SdfJointAxis>& axis = j.joint->axis;
+  const std::string& type = j.joint->type;
+  if (type == "fixed") {
+    joint->type = urdf::Joint::FIXED;
+  } else if (type == "continuous") {
+    joint->type = urdf::Joint::CONTINUOUS;
+  } else if (type == "revolute") {
+    joint->type = axis && (axis->lower > -kUnlimited || axis->upper < kUnlimited)
+                      ? urdf::Joint::REVOLUTE
+                      : urdf::Joint::CONTINUOUS;
+    if (joint->type == urdf::Joint::REVOLUTE) joint->limits = limitsOf(*axis);
+  } else if (type == "prismatic") {
+    joint->type = urdf::Joint::PRISMATIC;
+    if (axis) joint->limits = limitsOf(*axis);
+  } else {
+    warnings->push_back(where + ": joint '" + j.name + "': type not supported " +
+                        "(revolute, continuous, prismatic, fixed are): held fixed");
+    joint->type = urdf::Joint::FIXED;
   }
 }
 
@@ -54,11 +50,11 @@ urdf::JointSharedPtr makeJoint(const JointEntry& j, const std::string& where,
   auto joint = std::make_shared<urdf::Joint>();
   joint->name = j.name;
   setType(j, where, joint.get(), warnings);
-  const sdf::JointAxis* axis = j.joint->Axis(0);
+  const std::optional<SdfJointAxis>& axis = j.joint->axis;
   if (axis && joint->type != urdf::Joint::FIXED) {
     joint->dynamics = std::make_shared<urdf::JointDynamics>();
-    joint->dynamics->damping = axis->Damping();
-    joint->dynamics->friction = axis->Friction();
+    joint->dynamics->damping = axis->damping;
+    joint->dynamics->friction = axis->friction;
   }
   return joint;
 }

@@ -14,17 +14,17 @@
 namespace bullet_sim {
 namespace {
 
-urdf::InertialSharedPtr inertialOf(const sdf::Link& l) {
-  const ignition::math::Inertiald& in = l.Inertial();
+urdf::InertialSharedPtr inertialOf(const SdfLink& l) {
+  const SdfInertial& in = l.inertial;
   auto inertial = std::make_shared<urdf::Inertial>();
-  inertial->origin = toUrdfPose(sdfToIsometry(in.Pose()));
-  inertial->mass = in.MassMatrix().Mass();
-  inertial->ixx = in.MassMatrix().Ixx();
-  inertial->iyy = in.MassMatrix().Iyy();
-  inertial->izz = in.MassMatrix().Izz();
-  inertial->ixy = in.MassMatrix().Ixy();
-  inertial->ixz = in.MassMatrix().Ixz();
-  inertial->iyz = in.MassMatrix().Iyz();
+  inertial->origin = toUrdfPose(in.T_link_inertial);
+  inertial->mass = in.mass;
+  inertial->ixx = in.ixx;
+  inertial->iyy = in.iyy;
+  inertial->izz = in.izz;
+  inertial->ixy = in.ixy;
+  inertial->ixz = in.ixz;
+  inertial->iyz = in.iyz;
   return inertial;
 }
 
@@ -40,74 +40,75 @@ urdf::MaterialSharedPtr materialOf(const Eigen::Vector4f& rgba) {
 }  // namespace
 
 urdf::LinkSharedPtr SdfLinkConverter::convert(const LinkEntry& entry) {
-  const sdf::Link& l = *entry.link;
+  const SdfLink& l = *entry.link;
   auto out = std::make_shared<urdf::Link>();
   out->name = entry.name;
   out->inertial = inertialOf(l);
   const std::string where = where_ + " link '" + entry.name + "'";
-  // libsdformat only warns about a bad inertia (static links may have one); a moving
+  // Static links may have a bad inertia (Gazebo saves them with nan moments); a moving
   // link cannot be simulated with it.
   checkInertial(*out->inertial, where);
   addCollisions(l, entry.name, where, out.get());
   addVisuals(l, where, out.get());
   if (!out->collision_array.empty()) out->collision = out->collision_array.front();
   if (!out->visual_array.empty()) out->visual = out->visual_array.front();
-  for (uint64_t i = 0; i < l.SensorCount(); ++i) {
-    spec_->warnings.push_back(where + ": sensor '" + l.SensorByIndex(i)->Name() +
+  for (const SdfSensor& sensor : l.sensors) {
+    spec_->warnings.push_back(where + ": sensor '" + sensor.name +
                               "' is not simulated (sensors of SDF models are not)");
   }
   return out;
 }
 
-void SdfLinkConverter::addCollisions(const sdf::Link& l, const std::string& link,
+void SdfLinkConverter::addCollisions(const SdfLink& l, const std::string& link,
                                      const std::string& where, urdf::Link* out) {
-  for (uint64_t i = 0; i < l.CollisionCount(); ++i) {
-    const sdf::Collision& c = *l.CollisionByIndex(i);
+  for (const SdfCollision& c : l.collisions) {
     auto col = std::make_shared<urdf::Collision>();
-    col->name = c.Name();
-    col->origin = toUrdfPose(sdfToIsometry(poseInParent(c)));
-    const std::string cwhere = where + " collision '" + c.Name() + "'";
-    col->geometry = geometry(*c.Geom(), cwhere);
+    col->name = c.name;
+    col->origin = toUrdfPose(c.T_link_collision);
+    const std::string cwhere = where + " collision '" + c.name + "'";
+    col->geometry = geometry(c.geometry, c.origin, cwhere);
     out->collision_array.push_back(col);
     readFriction(c, link, cwhere);
   }
 }
 
-void SdfLinkConverter::addVisuals(const sdf::Link& l, const std::string& where,
+void SdfLinkConverter::addVisuals(const SdfLink& l, const std::string& where,
                                   urdf::Link* out) {
-  for (uint64_t i = 0; i < l.VisualCount(); ++i) {
-    const sdf::Visual& v = *l.VisualByIndex(i);
-    const std::string vwhere = where + " visual '" + v.Name() + "'";
+  for (const SdfVisual& v : l.visuals) {
+    const std::string vwhere = where + " visual '" + v.name + "'";
     auto vis = std::make_shared<urdf::Visual>();
-    vis->name = v.Name();
-    vis->origin = toUrdfPose(sdfToIsometry(poseInParent(v)));
-    vis->geometry = geometry(*v.Geom(), vwhere);
-    const Appearance look = visualAppearance(v, vwhere, source_, resolver_, &spec_->warnings);
+    vis->name = v.name;
+    vis->origin = toUrdfPose(v.T_link_visual);
+    vis->geometry = geometry(v.geometry, v.origin, vwhere);
+    const Appearance look = visualAppearance(v, vwhere, resolver_, &spec_->warnings);
     if (!look.texture.path.empty()) textures_[vis.get()] = look.texture;
     vis->material = materialOf(look.rgba);
     out->visual_array.push_back(vis);
   }
 }
 
-urdf::GeometrySharedPtr SdfLinkConverter::geometry(const sdf::Geometry& g,
+urdf::GeometrySharedPtr SdfLinkConverter::geometry(const SdfGeometry& g,
+                                                   const SdfOrigin& origin,
                                                    const std::string& where) const {
   checkGeometrySize(g, where);
-  std::optional<Geometry> geometry = geometryOf(g);
+  std::optional<Geometry> geometry = g.shape;
   if (!geometry || geometry->kind == Geometry::Plane) {
-    throw LoadError(where + ": geometry type '" + geometryName(g.Type()) +
+    throw LoadError(where + ": geometry type '" + g.type +
                     "' is not supported for a movable model (box, cylinder, sphere, " +
                     "mesh are)");
   }
   if (geometry->kind == Geometry::Mesh) {
-    const std::string base =
-        std::filesystem::path(g.MeshShape()->FilePath()).parent_path().string();
+    std::error_code ec;
+    const std::string base = std::filesystem::is_regular_file(origin.file, ec)
+                                 ? std::filesystem::path(origin.file).parent_path().string()
+                                 : "";
     const std::string path = resolver_.resolve(geometry->mesh_uri, base);
     if (!path.empty()) geometry->mesh_uri = path;
   }
   return urdfGeometry(*geometry);
 }
 
-void SdfLinkConverter::readFriction(const sdf::Collision& c, const std::string& link,
+void SdfLinkConverter::readFriction(const SdfCollision& c, const std::string& link,
                                     const std::string& where) {
   const auto known = spec_->surfaces.find(link);
   SurfaceParams s = known == spec_->surfaces.end() ? SurfaceParams() : known->second;

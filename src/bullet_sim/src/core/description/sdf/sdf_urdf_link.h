@@ -16,11 +16,10 @@ namespace bullet_sim {
 /// in the model's RobotSpec and beside it.
 class SdfLinkConverter {
  public:
-  /// `where` names the model in messages, `source` its file; warnings and surfaces go to
-  /// `spec`, which must outlive the converter.
-  SdfLinkConverter(std::string where, std::string source, const UriResolver& resolver,
-                   RobotSpec* spec)
-      : where_(std::move(where)), source_(std::move(source)), resolver_(resolver), spec_(spec) {}
+  /// `where` names the model in messages; warnings and surfaces go to `spec`, which must
+  /// outlive the converter.
+  SdfLinkConverter(std::string where, const UriResolver& resolver, RobotSpec* spec)
+      : where_(std::move(where)), resolver_(resolver), spec_(spec) {}
 
   /// The URDF link of `entry`: inertial (checked), collisions (their friction into
   /// spec->surfaces), visuals in their material's colour; its sensors are warned about.
@@ -31,17 +30,17 @@ class SdfLinkConverter {
   const std::map<const urdf::Visual*, TextureRef>& textures() const { return textures_; }
 
  private:
-  void addCollisions(const sdf::Link& l, const std::string& link, const std::string& where,
+  void addCollisions(const SdfLink& l, const std::string& link, const std::string& where,
                      urdf::Link* out);
-  void addVisuals(const sdf::Link& l, const std::string& where, urdf::Link* out);
+  void addVisuals(const SdfLink& l, const std::string& where, urdf::Link* out);
   /// A mesh's file is resolved here, from the folder of the SDF file that names it: the
   /// URDF model carries the path.
-  urdf::GeometrySharedPtr geometry(const sdf::Geometry& g, const std::string& where) const;
+  urdf::GeometrySharedPtr geometry(const SdfGeometry& g, const SdfOrigin& origin,
+                                   const std::string& where) const;
   /// <surface><friction><ode><mu>/<mu2> of a collision, as the URDF <gazebo> tags give them.
-  void readFriction(const sdf::Collision& c, const std::string& link, const std::string& where);
+  void readFriction(const SdfCollision& c, const std::string& link, const std::string& where);
 
   std::string where_;
-  std::string source_;
   const UriResolver& resolver_;
   RobotSpec* spec_;
   std::map<const urdf::Visual*, TextureRef> textures_;

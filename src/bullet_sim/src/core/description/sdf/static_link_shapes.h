@@ -5,10 +5,10 @@
 #include <vector>
 
 #include <Eigen/Geometry>
-#include <sdf/sdf.hh>
 
 #include "bullet_sim/description/resource_paths.h"
 #include "bullet_sim/description/world_spec.h"
+#include "description/sdf/sdf_dom.h"
 
 namespace bullet_sim {
 
@@ -24,29 +24,28 @@ class StaticLinkShapes {
   /// posed at T_world_link, to spec->shapes.
   /// @throws LoadError for an unsupported geometry, a bad size or scale, or a collision mesh
   /// that is found but cannot be read.
-  void read(const std::string& model, const sdf::Link& link, const Eigen::Isometry3d& T_world_link,
+  void read(const std::string& model, const SdfLink& link, const Eigen::Isometry3d& T_world_link,
             WorldSpec* spec);
 
   /// Warnings about meshes not found or not drawn, in the order met.
   const std::vector<std::string>& meshWarnings() const { return mesh_warnings_; }
 
  private:
-  void addCollision(const std::string& model, const sdf::Link& link, const sdf::Collision& col,
+  void addCollision(const std::string& model, const SdfLink& link, const SdfCollision& col,
                     const Eigen::Isometry3d& T_world_link, WorldSpec* spec);
-  void addVisual(const std::string& model, const sdf::Link& link, const sdf::Visual& vis,
+  void addVisual(const std::string& model, const SdfLink& link, const SdfVisual& vis,
                  const Eigen::Isometry3d& T_world_link, WorldSpec* spec);
-  /// The shape of a collision or visual `element` of `link`, its size checked; `where` is
-  /// set to the element's name for messages.
-  template <class Element>
-  StaticShape elementShape(const std::string& model, const sdf::Link& link,
-                           const Element& element, const Eigen::Isometry3d& T_world_link,
+  /// The shape of a collision or visual `name` of `link`, its size checked; `where` is
+  /// set to the element's name for messages. `origin` is where the element was read (the
+  /// folder of relative mesh files).
+  StaticShape elementShape(const std::string& model, const SdfLink& link,
+                           const std::string& name, const SdfGeometry& geometry,
+                           const SdfOrigin& origin, const Eigen::Isometry3d& T_world_element,
                            bool collides, std::string* where);
-  StaticShape shape(const std::string& model, const sdf::Link& link, const sdf::Geometry& geom,
-                    const Eigen::Isometry3d& pose, bool collides);
   /// A mesh's triangles: its file resolved from the folder of the SDF file that names it.
   /// A collision mesh that cannot be read is an error, a visual one a warning (not drawn).
-  void meshShape(const std::string& model, const sdf::Link& link, const sdf::Mesh& mesh,
-                 bool collides, StaticShape* s);
+  void meshShape(const std::string& model, const SdfLink& link, const SdfGeometry& geometry,
+                 const SdfOrigin& origin, bool collides, StaticShape* s);
 
   std::string source_;
   const UriResolver& resolver_;

@@ -1,13 +1,12 @@
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "bullet_sim/description/world_spec.h"
 #include "bullet_sim/errors.h"
 #include "description/robot_plan.h"
-#include "description/sdf/sdf_document.h"
 #include "description/sdf/sdf_model.h"
-#include "description/sdf/sdf_urdf_convert.h"
-#include "description/sdf/sdf_util.h"
+#include "description/sdf/sdf_reader.h"
 #include "description/sdf/static_link_shapes.h"
 #include "description/sdf/world_state.h"
 
@@ -30,7 +29,7 @@ class WorldReader {
       : source_(std::move(source)), resolver_(resolver), shapes_(source_, resolver) {}
 
   /// Reads the <state> first: its poses are checked with messages that name the value.
-  /// With `documents`, the XML and libsdformat documents the world was read from go there
+  /// With `documents`, the XML document and the model the world was read into go there
   /// instead of being freed before the spec is returned.
   WorldSpec read(const std::string& text, const std::string& path,
                  std::shared_ptr<const void>* documents = nullptr) {
@@ -39,24 +38,26 @@ class WorldReader {
     WorldSpec spec;
     const WorldState state = readWorldState(
         sdf_element ? sdf_element->FirstChildElement("world") : nullptr, source_, &spec.warnings);
-    auto root = loadSdfRoot(text, source_, path, resolver_, "world", &spec.warnings);
-    if (root->WorldCount() == 0) throw LoadError(source_ + ": no <world> element");
-    const sdf::World& world = *root->WorldByIndex(0);
-    spec.name = world.Name();
+    auto doc = std::make_unique<SdfDocument>(readSdf(*xml, source_, path, resolver_,
+                                                     &spec.warnings));
+    if (!doc->world) throw LoadError(source_ + ": no <world> element");
+    const SdfWorld& world = *doc->world;
+    spec.name = world.name;
     readSettings(world, &spec);
-    for (uint64_t i = 0; i < world.ModelCount(); ++i) {
-      const sdf::Model& model = *world.ModelByIndex(i);
-      readTopModel(model, stateOf(state.models, model.Name()), &spec);
+    for (const SdfModel& model : world.models) {
+      readTopModel(model, stateOf(state.models, model.name), &spec);
     }
     for (const auto& saved : state.models) {
-      if (world.ModelNameExists(saved.first)) continue;
+      const bool exists = std::any_of(world.models.begin(), world.models.end(),
+                                      [&](const SdfModel& m) { return m.name == saved.first; });
+      if (exists) continue;
       spec.warnings.push_back(source_ + ": <state> <model name=\"" + saved.first +
                               "\">: the world has no such model: its state is ignored");
     }
     const std::vector<std::string>& mesh_warnings = shapes_.meshWarnings();
     spec.warnings.insert(spec.warnings.end(), mesh_warnings.begin(), mesh_warnings.end());
     if (documents) {
-      *documents = std::make_shared<Documents>(Documents{std::move(xml), std::move(root)});
+      *documents = std::make_shared<Documents>(Documents{std::move(xml), std::move(doc)});
     }
     return spec;
   }
@@ -64,61 +65,46 @@ class WorldReader {
  private:
   struct Documents {
     std::unique_ptr<tinyxml2::XMLDocument> xml;
-    std::unique_ptr<sdf::Root> root;
+    std::unique_ptr<SdfDocument> world;
   };
 
   /// Gravity, step size, ambient light and the sun's direction.
-  void readSettings(const sdf::World& world, WorldSpec* spec) const {
-    const auto g = world.Gravity();
-    spec->gravity = Eigen::Vector3d(g.X(), g.Y(), g.Z());
-    if (world.PhysicsCount() > 0) {
-      spec->max_step_size_s = world.PhysicsByIndex(0)->MaxStepSize();
-      if (!(spec->max_step_size_s > 0)) {
-        throw LoadError(source_ + ": <physics> <max_step_size>: must be > 0");
-      }
+  void readSettings(const SdfWorld& world, WorldSpec* spec) const {
+    spec->gravity = world.gravity;
+    spec->max_step_size_s = world.max_step_size_s;
+    if (!(spec->max_step_size_s > 0)) {
+      throw LoadError(source_ + ": <physics> <max_step_size>: must be > 0");
     }
-    if (const sdf::Scene* scene = world.Scene()) {
-      const auto a = scene->Ambient();
-      spec->ambient = Eigen::Vector4f(a.R(), a.G(), a.B(), a.A());
-    }
-    readLight(world, spec);
-  }
-
-  void readLight(const sdf::World& world, WorldSpec* spec) const {
-    for (uint64_t i = 0; i < world.LightCount(); ++i) {
-      const sdf::Light& light = *world.LightByIndex(i);
-      if (light.Type() == sdf::LightType::DIRECTIONAL) {
-        const auto d = toPose(poseInParent(light)).orientation *
-                       Eigen::Vector3d(light.Direction().X(), light.Direction().Y(),
-                                       light.Direction().Z());
-        spec->light_direction = d.normalized();
-        return;
-      }
+    spec->ambient = world.ambient;
+    for (const SdfLight& light : world.lights) {
+      if (light.type != "directional") continue;
+      spec->light_direction = (light.T_world_light.linear() * light.direction).normalized();
+      return;
     }
   }
 
-  void readTopModel(const sdf::Model& model, const ModelState* saved, WorldSpec* spec) {
+  void readTopModel(const SdfModel& model, const ModelState* saved, WorldSpec* spec) {
     const Isometry3d T_world_model =
-        saved && saved->pose ? toIsometry(*saved->pose) : sdfToIsometry(poseInParent(model));
+        saved && saved->pose ? toIsometry(*saved->pose) : model.T_parent_model;
     std::string anchor;
     bool anchor_fixed = true;
     const bool anchored = isAnchoredToWorld(model, &anchor, &anchor_fixed);
     if (anchored && !anchor_fixed) {
-      spec->warnings.push_back(source_ + ": model '" + model.Name() + "': joint '" + anchor +
+      spec->warnings.push_back(source_ + ": model '" + model.name + "': joint '" + anchor +
                                "' to the world is not fixed: the model is held static");
     }
-    if (model.Static() || anchored) {
-      readStaticModel(model, model.Name(), T_world_model, saved, spec);
-      spec->static_models.push_back({model.Name(), toPose3(T_world_model)});
+    if (model.is_static || anchored) {
+      readStaticModel(model, model.name, T_world_model, saved, spec);
+      spec->static_models.push_back({model.name, toPose3(T_world_model)});
       return;
     }
     readMovableModel(model, T_world_model, saved, spec);
   }
 
-  void readMovableModel(const sdf::Model& model, const Isometry3d& T_world_model,
+  void readMovableModel(const SdfModel& model, const Isometry3d& T_world_model,
                         const ModelState* saved, WorldSpec* spec) const {
     WorldModel movable;
-    movable.name = model.Name();
+    movable.name = model.name;
     movable.spec = parseSdfModel(model, source_, resolver_);
     movable.pose = toPose3(T_world_model);
     // A saved pose of the root link places the model (its joints are not set from <state>).
@@ -136,24 +122,22 @@ class WorldReader {
   }
 
   /// A static model and its nested models, with the link poses of a saved state.
-  void readStaticModel(const sdf::Model& model, const std::string& name,
+  void readStaticModel(const SdfModel& model, const std::string& name,
                        const Isometry3d& T_world_model, const ModelState* saved,
                        WorldSpec* spec) {
-    for (uint64_t l = 0; l < model.LinkCount(); ++l) {
-      const sdf::Link& link = *model.LinkByIndex(l);
-      Isometry3d T_world_link = T_world_model * sdfToIsometry(poseInParent(link));
-      if (saved && saved->link_poses.count(link.Name())) {
-        T_world_link = toIsometry(saved->link_poses.at(link.Name()));
+    for (const SdfLink& link : model.links) {
+      Isometry3d T_world_link = T_world_model * link.T_model_link;
+      if (saved && saved->link_poses.count(link.name)) {
+        T_world_link = toIsometry(saved->link_poses.at(link.name));
       }
       shapes_.read(name, link, T_world_link, spec);
     }
-    for (uint64_t m = 0; m < model.ModelCount(); ++m) {
-      const sdf::Model& nested = *model.ModelByIndex(m);
-      const ModelState* nested_saved = saved ? stateOf(saved->models, nested.Name()) : nullptr;
+    for (const SdfModel& nested : model.models) {
+      const ModelState* nested_saved = saved ? stateOf(saved->models, nested.name) : nullptr;
       const Isometry3d T_world_nested = nested_saved && nested_saved->pose
                                             ? toIsometry(*nested_saved->pose)
-                                            : T_world_model * sdfToIsometry(poseInParent(nested));
-      readStaticModel(nested, name + "::" + nested.Name(), T_world_nested, nested_saved, spec);
+                                            : T_world_model * nested.T_parent_model;
+      readStaticModel(nested, name + "::" + nested.name, T_world_nested, nested_saved, spec);
     }
   }
 
