@@ -25,19 +25,16 @@ namespace {
 using bullet_sim_node::Config;
 using bullet_sim_node::SimulatorNode;
 
-/// The world file named on the command line, loaded on a thread of its own so that
-/// libsdformat parses it while roscpp starts (its XML-RPC server, /rosout, the parameters).
-/// The spec is handed over as soon as it is read; the thread then frees the parser's
-/// documents while the simulator starts, and once it has ended, finish() gives the memory
-/// back to the system. glibc's fastbins are off meanwhile: libsdformat allocates and frees
-/// a great many small pieces, and without fastbins glibc does not stop to consolidate them
-/// (the load takes a seventh less CPU).
+/// The world file named on the command line, loaded on a thread of its own so that it is
+/// read while roscpp starts (its XML-RPC server, /rosout, the parameters). The spec is
+/// handed over as soon as it is read; the thread then frees the parser's documents while
+/// the simulator starts, and once it has ended, finish() gives the memory back to the
+/// system.
 class WorldPreload {
  public:
   explicit WorldPreload(const std::string& world_file) : file_(world_file) {
     if (file_.empty()) return;
     spec_ = promise_.get_future();
-    mallopt(M_MXFAST, 0);
     thread_ = std::thread([this] { load(); });
   }
   ~WorldPreload() {
@@ -68,12 +65,8 @@ class WorldPreload {
       promise_.set_exception(std::current_exception());
     }
     documents.reset();
-    mallopt(M_MXFAST, kGlibcDefaultMaxFast);
     ended_.store(true, std::memory_order_release);
   }
-
-  /// glibc's default M_MXFAST: 64 * sizeof(size_t) / 4 bytes.
-  static constexpr int kGlibcDefaultMaxFast = 64 * sizeof(size_t) / 4;
 
   std::string file_;
   std::promise<bullet_sim::WorldSpec> promise_;

@@ -16,7 +16,7 @@ import unittest
 import rostest
 from roslib.packages import find_node
 
-MODELS = 200  # a world that takes a noticeable time to load (libsdformat, ~2 ms a model)
+MODELS = 1000  # a world that takes a noticeable time to read and build (about 0.5 s)
 TOLERANCE_S = 0.05  # of sim time ahead of the wall time since the node said it was ready
 
 

@@ -59,7 +59,7 @@ void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec
 }
 
 void releaseParserMemory() {
-  // Parsing a model or world (urdfdom, libsdformat's element trees) frees tens of
+  // Parsing a model or world (urdfdom's and tinyxml2's element trees) frees
   // megabytes in small blocks that glibc keeps for reuse; the simulation never needs
   // them again, so they go back to the system.
   malloc_trim(0);
