@@ -6,7 +6,7 @@ import sys
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from test_roscd import SETUP  # noqa: E402 (nosetests loads this file by its path)
+from test_roscd import SETUP  # noqa: E402 (run by its path, from any folder)
 
 # What `import rosclean` (roslaunch imports it) leaves loaded.
 PROBE = ('import sys, distutils.spawn, rosclean; '

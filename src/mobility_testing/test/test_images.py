@@ -32,10 +32,6 @@ class ImagesTest(unittest.TestCase):
         self.assertEqual(int(np.sum(image[:, 5:] == [255, 107, 10]) // 3), 20)
 
 
-if __name__ == '__main__':
-    unittest.main()
-
-
 class ColourClassTest(unittest.TestCase):
     def test_classes_of_lit_colours(self):
         from mobility_testing.images import count_class
@@ -72,3 +68,7 @@ class UrdfModelTest(unittest.TestCase):
         self.assertEqual(links(text), {'a', 'b', 'c'})
         self.assertEqual(joints(text), {'j': ('fixed', 'a', 'b')})
         self.assertEqual(roots(text), {'a', 'c'})
+
+
+if __name__ == '__main__':
+    unittest.main()
