@@ -1,5 +1,5 @@
 #!/bin/bash
-# Builds the test programs (-j2) and runs every test of the workspace (gtests, nosetests,
+# Builds the test programs (-j2) and runs every test of the workspace (gtests, pytests,
 # rostests, GUI tests, the benchmark scripts' own checks) on TEST_JOBS workers at once
 # (default 2), each worker with its own Xvfb server (scripts/test_runner.py); then prints
 # a summary and exits non-zero if any test failed, errored, outlived its time limit or

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The test jobs of a catkin build folder: one per ctest entry (a gtest binary, a nosetests
+"""The test jobs of a catkin build folder: one per ctest entry (a gtest binary, a pytest
 file or a rostest launch file), with the result files it writes, its time limit, and the
 group of jobs it must not run beside. The commands are catkin's own (`ctest
 --show-only=json-v1` lists them: catkin's run_tests.py, which writes a failing result when
@@ -18,12 +18,12 @@ from dataclasses import dataclass
 # side on two and three workers.
 GROUPS = {}
 
-# Wall seconds a job may take when its own files name no limit (gtests, nosetests).
+# Wall seconds a job may take when its own files name no limit (gtests, pytests).
 DEFAULT_LIMIT_S = 900.0
 # Added to the sum of a rostest's time-limits: master, launch and shutdown.
 ROSTEST_MARGIN_S = 120.0
 # Expected seconds of a job never measured, by kind, to start long ones first.
-FIRST_GUESS_S = {'rostest': 60.0, 'nosetests': 10.0, 'gtest': 5.0}
+FIRST_GUESS_S = {'rostest': 60.0, 'pytests': 10.0, 'gtest': 5.0}
 
 
 @dataclass
