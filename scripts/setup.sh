@@ -1,25 +1,49 @@
 #!/bin/bash
 # Installs what the workspace needs and is missing: Debian packages listed in
-# deps/apt-packages.txt and PyPI packages in deps/pip-requirements.txt (for
+# deps/apt-packages.txt, those of deps/apt-packages-optional.txt that the release
+# packages (Debian 12 and 13 differ), and PyPI packages in deps/pip-requirements.txt (for
 # Debian's /usr/bin/python3, which the ROS Python modules need). A second run
 # only checks and exits. --bench also makes the benchmark's virtual environment.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=$(grep -v '^\s*#' deps/apt-packages.txt | awk 'NF {print $1}')
-missing=()
-for pkg in $packages; do
-  status=$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)
-  [[ "$status" == "install ok installed" ]] || missing+=("$pkg")
-done
-if (( ${#missing[@]} )); then
-  echo "setup: installing ${#missing[@]} Debian package(s): ${missing[*]}"
+list_packages() { grep -v '^\s*#' "$1" | awk 'NF {print $1}'; }
+not_installed() {  # prints the packages of "$@" that dpkg does not have installed
+  (( $# )) || return 0
+  local installed
+  installed=$(dpkg-query -W -f='${Package} ${Status}\n' "$@" 2>/dev/null | awk '/ install ok installed$/ {print $1}' || true)
+  for pkg in "$@"; do
+    grep -qxF "$pkg" <<<"$installed" || echo "$pkg"
+  done
+}
+packaged() {  # prints the packages of "$@" that apt can install on this release
+  (( $# )) || return 0
+  LC_ALL=C apt-cache policy "$@" 2>/dev/null | awk '
+    /^[^ ]/ {pkg = $1; sub(/:$/, "", pkg)}
+    /^  Candidate:/ && $2 != "(none)" {print pkg}'
+}
+
+packages=$(list_packages deps/apt-packages.txt)
+optional=$(list_packages deps/apt-packages-optional.txt)
+mapfile -t missing < <(not_installed $packages)
+mapfile -t optional_missing < <(not_installed $optional)
+# An optional package that this release does not package is left out without asking apt
+# again; when required packages are missing the lists are updated first and asked again.
+mapfile -t optional_wanted < <(packaged "${optional_missing[@]}")
+if (( ${#missing[@]} + ${#optional_wanted[@]} )); then
   sudo_cmd=()
   (( EUID == 0 )) || sudo_cmd=(sudo)
   "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  mapfile -t optional_wanted < <(packaged "${optional_missing[@]}")
+  install=("${missing[@]}" "${optional_wanted[@]}")
+  echo "setup: installing ${#install[@]} Debian package(s): ${install[*]}"
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${install[@]}"
 else
   echo "setup: all $(wc -w <<<"$packages") Debian packages present"
+fi
+mapfile -t optional_absent < <(not_installed $optional)
+if (( ${#optional_absent[@]} )); then
+  echo "setup: not packaged for this release (optional): ${optional_absent[*]}"
 fi
 
 # PyPI requirements: deps/pip-requirements.txt for /usr/bin/python3; with --bench also
@@ -47,7 +71,10 @@ PY
 pip_missing=$(pip_check /usr/bin/python3 deps/pip-requirements.txt)
 if [[ -n "$pip_missing" ]]; then
   echo "setup: installing for /usr/bin/python3: $pip_missing"
-  /usr/bin/python3 -m pip install -q --break-system-packages --root-user-action=ignore $pip_missing
+  # xacro 1.13.3 comes as source: built by Debian's setuptools through PEP 517 (pip 25 of
+  # Debian 13 deprecates the legacy setup.py build), with nothing fetched for the build.
+  /usr/bin/python3 -m pip install -q --break-system-packages --root-user-action=ignore \
+    --use-pep517 --no-build-isolation $pip_missing
 else
   echo "setup: PyPI packages of deps/pip-requirements.txt present"
 fi
