@@ -21,6 +21,9 @@ set(CMAKE_MODULE_LINKER_FLAGS_INIT "-Wl,--copy-dt-needed-entries")
 # The Python 3 of Debian's ROS modules, whatever python3 comes first in PATH (catkin's
 # PYTHON_EXECUTABLE: "No module named 'catkin_pkg'"; FindPython3 for Debian's ament-built
 # angles: "No module named 'ament_package'"). Debian's ROS modules are installed for
-# /usr/bin/python3 only. A value given with -D is kept.
+# /usr/bin/python3 only. A value given with -D is kept. Debian 12's catkin (0.8.10-9)
+# takes PYTHON_EXECUTABLE; Debian 13's (0.8.10-17) finds its interpreter with FindPython
+# and sets PYTHON_EXECUTABLE to Python_EXECUTABLE, which therefore follows it here.
 set(PYTHON_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Python interpreter (noetic_compat)")
+set(Python_EXECUTABLE ${PYTHON_EXECUTABLE} CACHE FILEPATH "Python interpreter of catkin's FindPython (noetic_compat)")
 set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "Python 3 interpreter (noetic_compat)")

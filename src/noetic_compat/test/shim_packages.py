@@ -1,4 +1,4 @@
-"""Catkin packages that reproduce, each, one failure of Noetic sources on Debian 12.
+"""Catkin packages that reproduce, each, one failure of Noetic sources on Debian 12 or 13.
 
 Each function writes one package into a workspace's src folder and returns the error text
 that its build gives without noetic_compat.
@@ -66,18 +66,39 @@ def old_header_names(src):
 
 
 def global_placeholders(src):
-    """A roscpp node that binds a callback with boost's bare _1, as slam_gmapping does."""
+    """A roscpp node whose callback is bound with boost's bare _1, as slam_gmapping binds
+    its own. Debian 13's roscpp headers put the placeholders into the global namespace
+    again (ros/publisher.h), so the binding is in a file that includes none of them
+    (src/callbacks.cpp), where it fails on Debian 12 and 13 alike."""
     _package(src, 'bare_placeholders', ['roscpp', 'std_msgs'], """
         find_package(catkin REQUIRED COMPONENTS roscpp std_msgs)
         catkin_package()
         include_directories(${catkin_INCLUDE_DIRS})
-        add_executable(bare_placeholders src/node.cpp)
+        add_executable(bare_placeholders src/node.cpp src/callbacks.cpp)
         target_link_libraries(bare_placeholders ${catkin_LIBRARIES})
-        """, {'src/node.cpp': """
+        """, {'src/callbacks.h': """
+        #pragma once
+        #include <boost/function.hpp>
+        #include <string>
+
+        boost::function<void(const std::string&)> store_into(std::string* last);
+        """, 'src/callbacks.cpp': """
+        #include "callbacks.h"
+        #include <boost/bind/bind.hpp>
+
+        namespace {
+        void store(std::string* last, const std::string& text) { *last = text; }
+        }  // namespace
+
+        boost::function<void(const std::string&)> store_into(std::string* last) {
+          return boost::bind(&store, last, _1);
+        }
+        """, 'src/node.cpp': """
         #include <boost/bind/bind.hpp>
         #include <boost/function.hpp>
         #include <ros/ros.h>
         #include <std_msgs/String.h>
+        #include "callbacks.h"
 
         struct Listener {
           void heard(const std_msgs::String::ConstPtr& msg) { last = msg->data; }
@@ -89,7 +110,9 @@ def global_placeholders(src):
           Listener listener;
           boost::function<void(const std_msgs::String::ConstPtr&)> callback =
               boost::bind(&Listener::heard, &listener, _1);
-          return callback ? 0 : 1;
+          std::string last;
+          store_into(&last)("heard");
+          return callback && last == "heard" ? 0 : 1;
         }
         """})
     return "'_1' was not declared in this scope"
@@ -136,3 +159,18 @@ def ament_angles(src):
         catkin_package()
         """, {})
     return 'No module named'
+
+
+def python_interp_twice(src):
+    """Two packages that find PythonInterp after catkin, as dynamic_reconfigure's
+    generate_dynamic_reconfigure_options() does (amcl, costmap_2d and the planners).
+    Debian 13's catkin finds its interpreter with FindPython and leaves PYTHON_EXECUTABLE
+    out of the cache; the first FindPythonInterp then caches it empty, and the second
+    package's stops. Debian 12's catkin caches it, and both packages configure there."""
+    for name in ('reconfigure_a', 'reconfigure_b'):
+        _package(src, name, [], """
+            find_package(catkin REQUIRED)
+            catkin_package()
+            find_package(PythonInterp REQUIRED)
+            """, {})
+    return 'Could NOT find PythonInterp (missing: PYTHON_EXECUTABLE)'

@@ -4,7 +4,8 @@
 Every case builds its package twice in a fresh overlay on this workspace: with the
 workspace's environment as `source devel/setup.bash` leaves it (the shim on), and once more
 with CMAKE_TOOLCHAIN_FILE unset (the shim off), where the build must stop with the error
-the shim removes; so a case whose package no longer reproduces its failure fails too.
+the shim removes; so a case whose package no longer reproduces its failure fails too. A
+failure that only Debian 13 has is checked to be absent on Debian 12.
 """
 import os
 import shutil
@@ -17,6 +18,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import shim_packages  # noqa: E402
 
 SHIM_OFF = 'unset CMAKE_TOOLCHAIN_FILE && '
+
+
+def catkin_finds_python_with_findpython():
+    """Debian 13's catkin (0.8.10-17) finds its interpreter with CMake's FindPython, which
+    takes Python_EXECUTABLE, not PYTHON_EXECUTABLE; Debian 12's (0.8.10-9) FindPythonInterp."""
+    with open('/usr/share/catkin/cmake/python.cmake') as f:
+        return 'find_package(Python ' in f.read()
 
 
 def underlay_setup():
@@ -72,6 +80,13 @@ class TestShims(unittest.TestCase):
         ws = self.check(shim_packages.old_header_names)
         self.assertTrue(os.path.isfile(os.path.join(ws, 'devel', 'lib', 'libold_headers.so')))
 
+    def check_builds_either_way(self, make_package):
+        """For a failure this release does not have: the package builds with and without
+        the shim."""
+        for name, shim_on in (('off', False), ('on', True)):
+            _, build, _ = self.build(make_package, name, shim_on)
+            self.assertEqual(build.returncode, 0, build.stdout[-3000:])
+
     def test_boost_global_placeholders(self):
         ws = self.check(shim_packages.global_placeholders)
         run = subprocess.run([os.path.join(ws, 'devel', 'lib', 'bare_placeholders',
@@ -91,15 +106,25 @@ class TestShims(unittest.TestCase):
         with open(os.path.join(ws, 'build', 'CMakeCache.txt')) as f:
             cache = f.read()
         self.assertIn('PYTHON_EXECUTABLE:FILEPATH=/usr/bin/python3', cache)
+        self.assertIn('Python_EXECUTABLE:FILEPATH=/usr/bin/python3', cache)
 
     def test_python3_for_find_python3_when_catkin_is_given_its_python(self):
         venv = os.path.join(self.tmp, 'other_python')
         subprocess.run(['/usr/bin/python3', '-m', 'venv', '--without-pip', venv], check=True)
+        # Debian 13's catkin does not take -DPYTHON_EXECUTABLE and stops earlier.
+        error = ("No module named 'catkin_pkg'" if catkin_finds_python_with_findpython()
+                 else "No module named 'ament_package'")
         ws = self.check(shim_packages.ament_angles, path_first=os.path.join(venv, 'bin'),
-                        cmake_args='-DPYTHON_EXECUTABLE=/usr/bin/python3',
-                        error="No module named 'ament_package'")
+                        cmake_args='-DPYTHON_EXECUTABLE=/usr/bin/python3', error=error)
         with open(os.path.join(ws, 'build', 'CMakeCache.txt')) as f:
             self.assertIn('Python3_EXECUTABLE:FILEPATH=/usr/bin/python3', f.read())
+
+
+    def test_python_interp_found_by_a_second_package(self):
+        if catkin_finds_python_with_findpython():
+            self.check(shim_packages.python_interp_twice)
+        else:
+            self.check_builds_either_way(shim_packages.python_interp_twice)
 
 
 if __name__ == '__main__':
