@@ -7,8 +7,8 @@ export PATH := /usr/bin:/bin:/usr/sbin:/sbin:$(PATH)
 # noetic_compat's toolchain (exported by devel/setup.bash) is for overlays, not this build.
 unexport CMAKE_TOOLCHAIN_FILE
 JOBS ?= 2
-# Packages to leave out, e.g. CATKIN_BLACKLIST_PACKAGES="bullet_sim;bullet_sim_rviz" on
-# Debian 13, which has no SDFormat; empty: every package.
+# Packages to leave out of the build, e.g. CATKIN_BLACKLIST_PACKAGES="bullet_sim_rviz";
+# empty: every package.
 CATKIN_BLACKLIST_PACKAGES ?=
 CATKIN_MAKE := catkin_make --source . --build build \
 	-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" \
