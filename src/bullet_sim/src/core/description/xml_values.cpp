@@ -7,29 +7,26 @@
 #include "bullet_sim/errors.h"
 
 namespace bullet_sim {
-namespace {
 
-std::string trim(const std::string& s) {
+std::string trimmed(const std::string& s) {
   const auto first = s.find_first_not_of(" \t\r\n");
   if (first == std::string::npos) return "";
   const auto last = s.find_last_not_of(" \t\r\n");
   return s.substr(first, last - first + 1);
 }
 
-bool parseDouble(const std::string& s, double* out) {
+bool parseNumber(const std::string& s, double* out) {
   if (s.empty()) return false;
   char* end = nullptr;
   *out = std::strtod(s.c_str(), &end);
   return end == s.c_str() + s.size();
 }
 
-}  // namespace
-
 std::string XmlValues::text(const tinyxml2::XMLElement* parent, const char* name,
                             const std::string& fallback) const {
   const tinyxml2::XMLElement* e = parent->FirstChildElement(name);
   if (!e) return fallback;
-  return trim(e->GetText() ? e->GetText() : "");
+  return trimmed(e->GetText() ? e->GetText() : "");
 }
 
 double XmlValues::number(const tinyxml2::XMLElement* parent, const char* name, double fallback,
@@ -37,7 +34,7 @@ double XmlValues::number(const tinyxml2::XMLElement* parent, const char* name, d
   if (!parent->FirstChildElement(name)) return fallback;
   const std::string s = text(parent, name, "");
   double value = 0;
-  if (!parseDouble(s, &value)) fail(where + " <" + name + ">", "'" + s + "' is not a number");
+  if (!parseNumber(s, &value)) fail(where + " <" + name + ">", "'" + s + "' is not a number");
   return value;
 }
 
@@ -60,7 +57,7 @@ Pose3 XmlValues::pose(const tinyxml2::XMLElement* parent, const char* name,
   std::string token;
   while (in >> token) {
     double d = 0;
-    if (!parseDouble(token, &d)) break;
+    if (!parseNumber(token, &d)) break;
     v.push_back(d);
   }
   if (v.size() != 6) fail(where + " <" + name + ">", "'" + s + "' is not 'x y z roll pitch yaw'");

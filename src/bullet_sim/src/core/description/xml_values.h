@@ -9,6 +9,12 @@
 
 namespace bullet_sim {
 
+/// `s` without leading and trailing white space.
+std::string trimmed(const std::string& s);
+/// The number `s` spells in full (strtod's syntax, "nan" and "inf" included); false for
+/// anything else.
+bool parseNumber(const std::string& s, double* out);
+
 /// Reads typed values from tinyxml2 elements. A malformed value throws
 /// LoadError naming the source, the element path given as `where` and the text.
 class XmlValues {

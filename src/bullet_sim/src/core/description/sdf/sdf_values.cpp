@@ -8,23 +8,10 @@
 #include <vector>
 
 #include "bullet_sim/errors.h"
+#include "description/xml_values.h"
 
 namespace bullet_sim {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto first = s.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos) return "";
-  const auto last = s.find_last_not_of(" \t\r\n");
-  return s.substr(first, last - first + 1);
-}
-
-bool parseDouble(const std::string& s, double* out) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  *out = std::strtod(s.c_str(), &end);
-  return end == s.c_str() + s.size();
-}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
@@ -42,7 +29,7 @@ Eigen::Matrix3d rpy(double roll, double pitch, double yaw) {
 }  // namespace
 
 std::string SdfValues::text(const tinyxml2::XMLElement* e) {
-  return trim(e && e->GetText() ? e->GetText() : "");
+  return trimmed(e && e->GetText() ? e->GetText() : "");
 }
 
 std::string SdfValues::text(const tinyxml2::XMLElement* parent, const char* name,
@@ -54,13 +41,13 @@ std::string SdfValues::text(const tinyxml2::XMLElement* parent, const char* name
 std::string SdfValues::attribute(const tinyxml2::XMLElement* e, const char* name,
                                  const std::string& fallback) {
   const char* value = e->Attribute(name);
-  return value ? trim(value) : fallback;
+  return value ? trimmed(value) : fallback;
 }
 
 std::string SdfValues::requiredAttribute(const tinyxml2::XMLElement* e, const char* name) const {
   const char* value = e->Attribute(name);
   if (!value) fail(e, std::string("the required attribute '") + name + "' is missing");
-  return trim(value);
+  return trimmed(value);
 }
 
 std::vector<double> SdfValues::numbers(const tinyxml2::XMLElement* e, size_t min_count,
@@ -72,7 +59,7 @@ std::vector<double> SdfValues::numbers(const tinyxml2::XMLElement* e, size_t min
   bool ok = true;
   while (in >> token) {
     double d = 0;
-    ok = ok && parseDouble(token, &d);
+    ok = ok && parseNumber(token, &d);
     v.push_back(d);
   }
   if (!ok || v.size() < min_count || v.size() > max_count) {
