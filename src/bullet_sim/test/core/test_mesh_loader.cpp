@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include <assimp/version.h>
 #include <gtest/gtest.h>
 
 #include "bullet_sim/description/mesh.h"
@@ -222,8 +223,13 @@ TEST(MeshCrashes, ColladaTrianglesWithoutIndicesCrashAssimpNotTheLoader) {
 TEST(MeshCrashes, ColladaEmptyFloatArrayCrashesAssimpNotTheLoader) {
   const std::string path =
       std::string(BULLET_SIM_FIXTURES) + "/mesh_collada_empty_float_array.dae";
+  // assimp 5.2 (Debian 12) dies on it; 5.4 (Debian 13) checks the accessor and says so.
+  const bool checks_accessors = aiGetVersionMajor() > 5 ||
+                                (aiGetVersionMajor() == 5 && aiGetVersionMinor() >= 4);
   EXPECT_EQ(loadErrorOf(path),
-            path + ": cannot read mesh: assimp crashed reading it (Segmentation fault)");
+            path + ": cannot read mesh: " +
+                (checks_accessors ? "Not enough data for accessor"
+                                  : "assimp crashed reading it (Segmentation fault)"));
 }
 
 TEST(MeshCrashes, ATriangleReadInTheChildProcessArrivesWhole) {
