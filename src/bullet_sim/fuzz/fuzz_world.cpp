@@ -1,5 +1,6 @@
-// libFuzzer target: an SDF world as text (libsdformat, includes of the built-in models,
-// <state>, materials, movable models), then a Simulation built from it and stepped.
+// libFuzzer target: an SDF world as text (the SDF reader: versions 1.0 to 1.9, frames and
+// relative poses, includes of the built-in models, <state>, materials, movable models),
+// then a Simulation built from it and stepped.
 // A LoadError is the expected answer to bad input; anything else stops the run.
 #include <cstddef>
 #include <cstdio>
