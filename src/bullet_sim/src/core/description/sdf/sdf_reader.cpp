@@ -84,20 +84,33 @@ SdfDocument readSdf(const tinyxml2::XMLDocument& doc, const std::string& source,
   return out;
 }
 
-std::optional<std::pair<std::string, Eigen::Isometry3d>> SdfModel::canonicalLink() const {
-  const std::string wanted = canonical_link;
-  const auto sep = wanted.find("::");
-  for (const SdfLink& l : links) {
+namespace {
+
+/// The link `wanted` ("" = the first, else the first nested model's) of `m`, scoped and
+/// posed in m's frame.
+std::optional<std::pair<std::string, Eigen::Isometry3d>> findCanonical(const SdfModel& m,
+                                                                       const std::string& wanted) {
+  for (const SdfLink& l : m.links) {
     if (wanted.empty() || l.name == wanted) return std::make_pair(l.name, l.T_model_link);
   }
-  for (const SdfModel& m : models) {
-    if (!wanted.empty() && (sep == std::string::npos || wanted.substr(0, sep) != m.name)) continue;
-    SdfModel inner = m;
-    if (!wanted.empty()) inner.canonical_link = wanted.substr(sep + 2);
-    const auto found = inner.canonicalLink();
-    if (found) return std::make_pair(m.name + "::" + found->first, m.T_parent_model * found->second);
+  const auto sep = wanted.find("::");
+  for (const SdfModel& nested : m.models) {
+    if (!wanted.empty() && (sep == std::string::npos || wanted.substr(0, sep) != nested.name)) {
+      continue;
+    }
+    const auto found = findCanonical(nested, wanted.empty() ? "" : wanted.substr(sep + 2));
+    if (found) {
+      return std::make_pair(nested.name + "::" + found->first,
+                            nested.T_parent_model * found->second);
+    }
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::pair<std::string, Eigen::Isometry3d>> SdfModel::canonicalLink() const {
+  return findCanonical(*this, canonical_link);
 }
 
 }  // namespace bullet_sim
