@@ -378,3 +378,39 @@ TEST(WorldDocuments, NoneAreHandedOverWhenTheWorldCannotBeLoaded) {
   EXPECT_THROW(loadWorldFile(path, kNoPaths, &documents), LoadError);
   EXPECT_EQ(documents, nullptr);
 }
+
+// Every <light> of the world reaches the spec in world coordinates: a spot light under a
+// yawed frame points where the frame turns its direction, with its attenuation and cone.
+TEST(WorldLights, PointAndSpotLightsInWorldCoordinates) {
+  const WorldSpec spec = loadWorldString(R"(<sdf version="1.6"><world name="w">
+    <light type="directional" name="sun"><direction>0 0.6 -0.8</direction></light>
+    <light type="point" name="lamp"><pose>1 2 3 0 0 0</pose>
+      <diffuse>0.5 0.5 0.5 1</diffuse>
+      <attenuation><range>20</range><constant>0.5</constant><linear>0.01</linear>
+        <quadratic>0.001</quadratic></attenuation></light>
+    <light type="spot" name="spot"><pose>0 0 2 0 0 1.5707963267948966</pose>
+      <direction>1 0 0</direction>
+      <spot><inner_angle>0.1</inner_angle><outer_angle>0.5</outer_angle>
+        <falloff>1.5</falloff></spot></light>
+  </world></sdf>)", "lights.world", kNoPaths);
+  ASSERT_EQ(spec.lights.size(), 3u);
+  EXPECT_EQ(spec.lights[0].type, "directional");
+  EXPECT_NEAR(spec.light_direction.y(), 0.6, 1e-9);
+  EXPECT_NEAR(spec.light_direction.z(), -0.8, 1e-9);
+  const LightSpec& lamp = spec.lights[1];
+  EXPECT_EQ(lamp.name, "lamp");
+  EXPECT_EQ(lamp.type, "point");
+  EXPECT_NEAR((lamp.pose.position - Eigen::Vector3d(1, 2, 3)).norm(), 0, 1e-12);
+  EXPECT_FLOAT_EQ(lamp.diffuse.x(), 0.5f);
+  EXPECT_DOUBLE_EQ(lamp.range_m, 20);
+  EXPECT_DOUBLE_EQ(lamp.constant, 0.5);
+  EXPECT_DOUBLE_EQ(lamp.linear, 0.01);
+  EXPECT_DOUBLE_EQ(lamp.quadratic, 0.001);
+  const LightSpec& spot = spec.lights[2];
+  EXPECT_EQ(spot.type, "spot");
+  // (1, 0, 0) in a frame yawed 90 degrees is +y in the world.
+  EXPECT_NEAR((spot.direction - Eigen::Vector3d(0, 1, 0)).norm(), 0, 1e-9);
+  EXPECT_DOUBLE_EQ(spot.spot_inner_rad, 0.1);
+  EXPECT_DOUBLE_EQ(spot.spot_outer_rad, 0.5);
+  EXPECT_DOUBLE_EQ(spot.spot_falloff, 1.5);
+}

@@ -44,6 +44,19 @@ struct StaticModel {
   Pose3 pose;  ///< the model frame in the world
 };
 
+/// A <light> of the world, as Gazebo (OGRE) lights the scene with it.
+struct LightSpec {
+  std::string name, type = "point";  ///< "point", "directional" or "spot"
+  Pose3 pose;                        ///< world pose of the light
+  Eigen::Vector3d direction{0, 0, -1};  ///< world frame, unit (directional and spot)
+  Eigen::Vector4f diffuse{1, 1, 1, 1}, specular{0.1f, 0.1f, 0.1f, 1};
+  /// <attenuation>: the light reaches `range_m`; its intensity at distance d is
+  /// 1 / (constant + linear d + quadratic d^2)
+  double range_m = 10, constant = 1, linear = 1, quadratic = 0;
+  double spot_inner_rad = 0, spot_outer_rad = 0, spot_falloff = 0;  ///< spot only
+  bool cast_shadows = false;
+};
+
 struct WorldSpec {
   std::string name;
   std::vector<StaticShape> shapes;
@@ -51,7 +64,9 @@ struct WorldSpec {
   std::vector<WorldModel> models;
   Eigen::Vector3d gravity{0, 0, -9.8};
   double max_step_size_s = 0.001;
+  /// The direction of the world's first directional light (the sun), world frame
   Eigen::Vector3d light_direction{-0.5, 0.1, -0.9};
+  std::vector<LightSpec> lights;  ///< every <light> of the world, in file order
   Eigen::Vector4f ambient{0.4f, 0.4f, 0.4f, 1.0f};
   std::vector<std::string> warnings;
 };

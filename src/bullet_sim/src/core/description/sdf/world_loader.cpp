@@ -68,7 +68,7 @@ class WorldReader {
     std::unique_ptr<SdfDocument> world;
   };
 
-  /// Gravity, step size, ambient light and the sun's direction.
+  /// Gravity, step size, ambient light, the lights and the sun's direction.
   void readSettings(const SdfWorld& world, WorldSpec* spec) const {
     spec->gravity = world.gravity;
     spec->max_step_size_s = world.max_step_size_s;
@@ -76,10 +76,28 @@ class WorldReader {
       throw LoadError(source_ + ": <physics> <max_step_size>: must be > 0");
     }
     spec->ambient = world.ambient;
+    bool sun_found = false;
     for (const SdfLight& light : world.lights) {
-      if (light.type != "directional") continue;
-      spec->light_direction = (light.T_world_light.linear() * light.direction).normalized();
-      return;
+      LightSpec l;
+      l.name = light.name;
+      l.type = light.type;
+      l.pose = toPose3(light.T_world_light);
+      l.direction = (light.T_world_light.linear() * light.direction).normalized();
+      l.diffuse = light.diffuse;
+      l.specular = light.specular;
+      l.range_m = light.range_m;
+      l.constant = light.constant;
+      l.linear = light.linear;
+      l.quadratic = light.quadratic;
+      l.spot_inner_rad = light.spot_inner_rad;
+      l.spot_outer_rad = light.spot_outer_rad;
+      l.spot_falloff = light.spot_falloff;
+      l.cast_shadows = light.cast_shadows;
+      if (l.type == "directional" && !sun_found) {
+        spec->light_direction = l.direction;
+        sun_found = true;
+      }
+      spec->lights.push_back(l);
     }
   }
 
