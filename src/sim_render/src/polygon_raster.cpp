@@ -12,6 +12,11 @@
 
 namespace sim_render {
 namespace detail {
+
+std::uint8_t toByte(float value) {
+  return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
+}
+
 namespace {
 
 // Point where segment inside -> outside crosses the plane x = near. Always computed from the
@@ -175,6 +180,40 @@ RasterResult PolygonRasterizer::draw(const Eigen::Vector3d& a, const Eigen::Vect
   return clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
 }
 
+RasterResult PolygonRasterizer::drawLit(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                        const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
+                                        const PixelLighting& lighting,
+                                        const RasterTarget& target) const {
+  Eigen::Vector2d screen[kMaxVertices];
+  Eigen::Vector3d plane;
+  bool clipped = false;
+  const int count = project(a, b, c, normal, screen, &plane, &clipped);
+  if (count == 0) return RasterResult::Culled;
+  const float du = static_cast<float>(plane.x());
+  const float inverse_far = inverse_far_;
+  const float inverse_fx = static_cast<float>(1.0 / fx_), inverse_fy = static_cast<float>(1.0 / fy_);
+  const float cx = static_cast<float>(cx_), cy = static_cast<float>(cy_);
+  const Eigen::Vector3f colour = lighting.colour;
+  forEachSpan(screen, count, target, [&](int row, int col_begin, int col_end) {
+    const float base = static_cast<float>(plane.x() * col_begin + plane.y() * row + plane.z());
+    const float ray_z = -(static_cast<float>(row) - cy) * inverse_fy;
+    float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
+    std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
+    for (int col = col_begin; col < col_end; ++col, pixel += 3) {
+      const float inverse_depth = base + du * static_cast<float>(col - col_begin);
+      if (!(inverse_depth > depth[col] && inverse_depth >= inverse_far)) continue;
+      depth[col] = inverse_depth;
+      const float x = 1.0f / inverse_depth;
+      const Eigen::Vector3f light = lightFactorAt(
+          lighting, x, -(static_cast<float>(col) - cx) * inverse_fx * x, ray_z * x);
+      pixel[0] = toByte(colour.x() * light.x());
+      pixel[1] = toByte(colour.y() * light.y());
+      pixel[2] = toByte(colour.z() * light.z());
+    }
+  });
+  return clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
+}
+
 namespace {
 
 /// The mipmap level whose texel matches the pixel's footprint at (col, row): the larger
@@ -250,13 +289,15 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
   // Each channel's texel values as the lighting turns them (modulate()), looked up per
   // pixel instead of multiplied.
   std::uint8_t lit[3][256];
-  for (int channel = 0; channel < 3; ++channel) {
+  for (int channel = 0; channel < 3 && !corners.lighting; ++channel) {
     const int factor = static_cast<int>(std::lround(corners.factor[channel] * 256.0f));
     for (int value = 0; value < 256; ++value) {
       lit[channel][value] = modulate(static_cast<std::uint8_t>(value), factor);
     }
   }
   const float inverse_far = inverse_far_;
+  const float inverse_fx = static_cast<float>(1.0 / fx_), inverse_fy = static_cast<float>(1.0 / fy_);
+  const float cx = static_cast<float>(cx_), cy = static_cast<float>(cy_);
   const bool four_pixel = four_pixel_texturing.load(std::memory_order_relaxed);
   forEachSpan(screen, count, target, [&](int row, int col_begin, int col_end) {
     const TextureLevel& level =
@@ -275,11 +316,12 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
     const float vz0 = static_cast<float>(vz.x() * col_begin + vz.y() * row + vz.z());
     const float diz = static_cast<float>(iz.x()), duz = static_cast<float>(uz.x()),
                 dvz = static_cast<float>(vz.x());
+    const float ray_z = -(static_cast<float>(row) - cy) * inverse_fy;
     int col = col_begin;
 #if defined(__SSE2__)
     // Four pixels at a time, each lane computed as the loop below computes a pixel (the same
     // operations in the same order), so that both give the same bytes.
-    if (four_pixel) {
+    if (four_pixel && !corners.lighting) {
       const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
       const __m128 iz0v = _mm_set1_ps(iz0), uz0v = _mm_set1_ps(uz0), vz0v = _mm_set1_ps(vz0);
       const __m128 dizv = _mm_set1_ps(diz), duzv = _mm_set1_ps(duz), dvzv = _mm_set1_ps(dvz);
@@ -330,6 +372,16 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
       const int x = std::min(level_width - 1, static_cast<int>((u - std::floor(u)) * fw));
       const int y = std::min(level_height - 1, static_cast<int>((v - std::floor(v)) * fh));
       const std::uint8_t* t = texels + (static_cast<std::size_t>(y) * level_width + x) * 3;
+      if (corners.lighting) {
+        const Eigen::Vector3f factor =
+            corners.lighting->colour.cwiseProduct(lightFactorAt(
+                *corners.lighting, w, -(static_cast<float>(col) - cx) * inverse_fx * w, ray_z * w));
+        for (int channel = 0; channel < 3; ++channel) {
+          pixel[channel] =
+              modulate(t[channel], static_cast<int>(std::lround(std::min(factor[channel], 256.0f) * 256.0f)));
+        }
+        continue;
+      }
       pixel[0] = lit[0][t[0]];
       pixel[1] = lit[1][t[1]];
       pixel[2] = lit[2][t[2]];

@@ -1,6 +1,7 @@
 // Internal: near-plane clipping and scanline rasterization of one camera-frame triangle.
 #pragma once
 
+#include "pixel_lighting.h"
 #include "sim_render/camera_model.h"
 #include "sim_render/texture.h"
 
@@ -19,6 +20,9 @@ struct RasterTarget {
   std::uint8_t* rgb8 = nullptr;
 };
 
+/// A colour channel in [0, 1] as a byte, clamped and rounded.
+std::uint8_t toByte(float value);
+
 enum class RasterResult { Culled, Drawn, DrawnClipped };
 
 #if defined(__SSE2__)
@@ -31,11 +35,13 @@ void floorFour(const float* in, float* out);
 void setFourPixelTexturing(bool on);
 
 /// A texture as one triangle is painted with it: the coordinates of its corners and the
-/// light's factor per channel (colour times lighting; 1 leaves the texel as it is).
+/// light's factor per channel (colour times lighting; 1 leaves the texel as it is), or,
+/// with `lighting`, the factor worked out per pixel.
 struct TexturedCorners {
   const Texture* texture = nullptr;
   Eigen::Vector2f uv[3];
   Eigen::Vector3f factor{1.0f, 1.0f, 1.0f};
+  const PixelLighting* lighting = nullptr;
 };
 
 /// Draws triangles given in the camera frame (Gazebo convention) with one flat colour.
@@ -51,6 +57,12 @@ class PolygonRasterizer {
   RasterResult draw(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                     const Eigen::Vector3d& normal, const std::uint8_t rgb[3],
                     const RasterTarget& target) const;
+
+  /// As draw(), each pixel's colour `lighting.colour` times its light factor worked out
+  /// at the pixel's point of the triangle.
+  RasterResult drawLit(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                       const Eigen::Vector3d& normal, const PixelLighting& lighting,
+                       const RasterTarget& target) const;
 
   /// As draw(), each pixel the texel under it (perspective-correct: u / x and v / x are
   /// affine in the pixel coordinates, as 1 / x is) times `corners.factor`.

@@ -1,5 +1,6 @@
 #include "sim_render/renderer.h"
 
+#include "frame_lights.h"
 #include "polygon_raster.h"
 
 #include <algorithm>
@@ -44,13 +45,12 @@ bool triangleOutside(const Frustum& f, const Eigen::Vector3d& a, const Eigen::Ve
   return false;
 }
 
-std::uint8_t toByte(float value) {
-  return static_cast<std::uint8_t>(std::lround(std::clamp(value, 0.0f, 1.0f) * 255.0f));
-}
+using detail::toByte;
 
 }  // namespace
 
-Renderer::Renderer(const CameraModel& camera) : camera_(camera) {
+Renderer::Renderer(const CameraModel& camera)
+    : camera_(camera), lights_(std::make_unique<detail::FrameLights>()) {
   camera_.validate();
   inverse_depth_.assign(static_cast<std::size_t>(camera_.width) * camera_.height, 0.0f);
 }
@@ -78,6 +78,7 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
   const double light_norm = lighting.direction.norm();
   const Eigen::Vector3d to_light =
       light_norm > 0 ? Eigen::Vector3d(-lighting.direction / light_norm) : Eigen::Vector3d::Zero();
+  lights_->prepare(lighting, T_camera_world);
 
   // Nearest first (by the far side of a shape's bounding sphere, so that the ground and
   // other large shapes come last): pixels of what lies behind then fail the depth test and
@@ -112,6 +113,8 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
         texture && !textured
             ? Eigen::Vector3f(shape.spec.rgba.head<3>().cwiseProduct(texture->meanColour()))
             : Eigen::Vector3f(shape.spec.rgba.head<3>());
+    // The point and spot lights that may reach the shape; each triangle tests these only.
+    lights_->selectForShape(T_camera_shape.translation(), mesh.bounding_radius_m);
 
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       const auto& tri = mesh.triangles[t];
@@ -121,15 +124,21 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
       const Eigen::Vector3d normal = R_camera_shape * mesh.face_normals[t];
       if (normal.dot(a) >= 0.0 || triangleOutside(frustum, a, b, c)) continue;
 
-      const double lambert = std::max(0.0, (R_world_shape * mesh.face_normals[t]).dot(to_light));
-      const Eigen::Vector3f light = lighting.ambient + lighting.diffuse * static_cast<float>(lambert);
+      const Eigen::Vector3d world_normal = R_world_shape * mesh.face_normals[t];
+      const double lambert = std::max(0.0, world_normal.dot(to_light));
+      Eigen::Vector3f light = lighting.ambient + lighting.diffuse * static_cast<float>(lambert);
+      light += lights_->directionalTerm(world_normal);
+      const detail::PixelLighting* per_pixel = lights_->onTriangle(a, b, c, normal, light, colour);
       detail::RasterResult result;
       if (textured) {
         detail::TexturedCorners corners;
         corners.texture = texture;
         for (int k = 0; k < 3; ++k) corners.uv[k] = mesh.uvs[tri[k]];
         corners.factor = colour.cwiseProduct(light);
+        corners.lighting = per_pixel;
         result = rasterizer.drawTextured(a, b, c, normal, corners, target);
+      } else if (per_pixel) {
+        result = rasterizer.drawLit(a, b, c, normal, *per_pixel, target);
       } else {
         const std::uint8_t rgb[3] = {toByte(colour.x() * light.x()), toByte(colour.y() * light.y()),
                                      toByte(colour.z() * light.z())};
@@ -140,6 +149,10 @@ void Renderer::render(const Scene& scene, const Eigen::Isometry3d& T_world_camer
     }
   }
 }
+
+Renderer::~Renderer() = default;
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 
 double Renderer::depthAt(int col, int row) const {
   if (col < 0 || row < 0 || col >= camera_.width || row >= camera_.height) {

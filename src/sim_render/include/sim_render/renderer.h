@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -25,10 +26,17 @@ struct RenderStats {
 /// Renders scenes with one camera model. Holds its depth buffer and scratch space, so a
 /// frame allocates nothing once the output vector has its size. Deterministic: the same
 /// scene and pose give the same bytes. Not thread-safe; use one Renderer per thread.
+namespace detail {
+class FrameLights;
+}  // namespace detail
+
 class Renderer {
  public:
   /// Validates the camera (std::invalid_argument naming the bad value).
   explicit Renderer(const CameraModel& camera);
+  ~Renderer();
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
 
   const CameraModel& camera() const { return camera_; }
 
@@ -57,6 +65,7 @@ class Renderer {
   std::vector<Eigen::Vector3d> camera_vertices_;
   std::vector<std::pair<double, std::size_t>> draw_order_;  ///< (sort key, shape index)
   RenderStats stats_;
+  std::unique_ptr<detail::FrameLights> lights_;  ///< the lights of the frame being drawn
 };
 
 }  // namespace sim_render
