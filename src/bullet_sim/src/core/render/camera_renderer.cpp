@@ -15,6 +15,7 @@
 #include "description/gazebo/camera_lens.h"
 #include "description/robot_plan.h"
 #include "render/lens_camera.h"
+#include "render/scene_lights.h"
 #include "render/shape_sources.h"
 
 namespace bullet_sim {
@@ -199,8 +200,6 @@ struct CameraRenderer::Impl {
 
   explicit Impl(const Simulation& s) : sim(s) {
     const WorldSpec& world = sim.world();
-    scene.lighting().direction = world.light_direction;
-    scene.lighting().ambient = world.ambient.head<3>();
     for (const StaticShape& s : world.shapes) {
       for (const sim_render::ShapeSpec& spec : shapesOf(s, s.mesh, s.rgba, s.texture, &sources)) {
         try {
@@ -350,6 +349,7 @@ void CameraRenderer::renderTogether(std::vector<CameraFrame>* frames) {
   requireDistinctCameras(*frames);
   impl_->syncRobots();
   impl_->poseRobots();
+  lightScene(impl_->sim.world(), &impl_->scene.lighting());
   std::vector<Impl::Draw> draws;
   draws.reserve(frames->size());
   for (CameraFrame& frame : *frames) {
