@@ -84,6 +84,30 @@ void forEachSpan(const Eigen::Vector2d* screen, int count, const RasterTarget& t
   }
 }
 
+/// A light factor (colour times light) in 1/256 steps, as modulate() takes it.
+int factorStep(float factor) {
+  return static_cast<int>(std::min(std::max(factor, 0.0f), 256.0f) * 256.0f + 0.5f);
+}
+
+#if defined(__SSE2__)
+/// The colour-times-light factors of the four pixels from column `col` of a span (lanes
+/// at depth x along the optical axis; `ray_z` the row's ray), per channel.
+void litFactorsFour(const PixelLighting& lighting, __m128 x, int col, float inverse_fx, float cx,
+                    float ray_z, float factors[3][4]) {
+  const __m128 columns = _mm_add_ps(_mm_set1_ps(static_cast<float>(col)), _mm_set_ps(3, 2, 1, 0));
+  const __m128 y = _mm_mul_ps(
+      _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(0.0f), _mm_sub_ps(columns, _mm_set1_ps(cx))),
+                 _mm_set1_ps(inverse_fx)),
+      x);
+  const __m128 z = _mm_mul_ps(_mm_set1_ps(ray_z), x);
+  __m128 r, g, b;
+  lightFactorFour(lighting, x, y, z, &r, &g, &b);
+  _mm_store_ps(factors[0], _mm_mul_ps(r, _mm_set1_ps(lighting.colour.x())));
+  _mm_store_ps(factors[1], _mm_mul_ps(g, _mm_set1_ps(lighting.colour.y())));
+  _mm_store_ps(factors[2], _mm_mul_ps(b, _mm_set1_ps(lighting.colour.z())));
+}
+#endif
+
 }  // namespace
 
 PolygonRasterizer::PolygonRasterizer(const CameraModel& camera)
@@ -199,7 +223,32 @@ RasterResult PolygonRasterizer::drawLit(const Eigen::Vector3d& a, const Eigen::V
     const float ray_z = -(static_cast<float>(row) - cy) * inverse_fy;
     float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
     std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
-    for (int col = col_begin; col < col_end; ++col, pixel += 3) {
+    int col = col_begin;
+#if defined(__SSE2__)
+    // Four pixels at a time, each lane as the loop below computes a pixel.
+    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
+    for (; col + 4 <= col_end; col += 4, pixel += 12) {
+      const __m128 k = _mm_add_ps(_mm_set1_ps(static_cast<float>(col - col_begin)), lanes);
+      const __m128 inverse_depth = _mm_add_ps(_mm_set1_ps(base), _mm_mul_ps(_mm_set1_ps(du), k));
+      const __m128 stored = _mm_loadu_ps(depth + col);
+      const __m128 nearer = _mm_and_ps(_mm_cmpgt_ps(inverse_depth, stored),
+                                       _mm_cmpge_ps(inverse_depth, _mm_set1_ps(inverse_far)));
+      const int drawn = _mm_movemask_ps(nearer);
+      if (drawn == 0) continue;
+      _mm_storeu_ps(depth + col, _mm_or_ps(_mm_and_ps(nearer, inverse_depth),
+                                           _mm_andnot_ps(nearer, stored)));
+      alignas(16) float factors[3][4];
+      litFactorsFour(lighting, _mm_div_ps(_mm_set1_ps(1.0f), inverse_depth), col, inverse_fx, cx,
+                     ray_z, factors);
+      for (int lane = 0; lane < 4; ++lane) {
+        if (!(drawn & (1 << lane))) continue;
+        for (int channel = 0; channel < 3; ++channel) {
+          pixel[3 * lane + channel] = toByte(factors[channel][lane]);
+        }
+      }
+    }
+#endif
+    for (; col < col_end; ++col, pixel += 3) {
       const float inverse_depth = base + du * static_cast<float>(col - col_begin);
       if (!(inverse_depth > depth[col] && inverse_depth >= inverse_far)) continue;
       depth[col] = inverse_depth;
@@ -321,7 +370,7 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
 #if defined(__SSE2__)
     // Four pixels at a time, each lane computed as the loop below computes a pixel (the same
     // operations in the same order), so that both give the same bytes.
-    if (four_pixel && !corners.lighting) {
+    if (four_pixel) {
       const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
       const __m128 iz0v = _mm_set1_ps(iz0), uz0v = _mm_set1_ps(uz0), vz0v = _mm_set1_ps(vz0);
       const __m128 dizv = _mm_set1_ps(diz), duzv = _mm_set1_ps(duz), dvzv = _mm_set1_ps(dvz);
@@ -349,6 +398,19 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
         _mm_store_si128(reinterpret_cast<__m128i*>(ys),
                         lastAtMost(_mm_cvttps_epi32(_mm_mul_ps(_mm_sub_ps(v, floor4(v)), fhv)),
                                    last_y));
+        if (corners.lighting) {
+          alignas(16) float factors[3][4];
+          litFactorsFour(*corners.lighting, w, col, inverse_fx, cx, ray_z, factors);
+          for (int lane = 0; lane < 4; ++lane) {
+            if (!(drawn & (1 << lane))) continue;
+            const std::uint8_t* t =
+                texels + (static_cast<std::size_t>(ys[lane]) * level_width + xs[lane]) * 3;
+            for (int channel = 0; channel < 3; ++channel) {
+              pixel[3 * lane + channel] = modulate(t[channel], factorStep(factors[channel][lane]));
+            }
+          }
+          continue;
+        }
         for (int lane = 0; lane < 4; ++lane) {
           if (!(drawn & (1 << lane))) continue;
           const std::uint8_t* t =
@@ -377,8 +439,7 @@ RasterResult PolygonRasterizer::drawTextured(const Eigen::Vector3d& a, const Eig
             corners.lighting->colour.cwiseProduct(lightFactorAt(
                 *corners.lighting, w, -(static_cast<float>(col) - cx) * inverse_fx * w, ray_z * w));
         for (int channel = 0; channel < 3; ++channel) {
-          pixel[channel] =
-              modulate(t[channel], static_cast<int>(std::lround(std::min(factor[channel], 256.0f) * 256.0f)));
+          pixel[channel] = modulate(t[channel], factorStep(factor[channel]));
         }
         continue;
       }

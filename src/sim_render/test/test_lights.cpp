@@ -1,6 +1,7 @@
 // Point and spot lights as OGRE's per-pixel lighting adds them, against pixels worked out
 // by hand. The camera looks straight down from 3.2 m at the ground (z = 0): fx = fy = 320,
 // so pixel (col, row) shows the ground point (x, y) = (0.01 (240 - row), 0.01 (320 - col)).
+#include "../src/polygon_raster.h"
 #include "render_test_util.h"
 #include "sim_render/renderer.h"
 
@@ -173,6 +174,31 @@ TEST(Lights, UnusableLightsAreLeftOut) {
   scene.lighting().lights.push_back(no_range);
   const std::vector<std::uint8_t> image = fromAbove(scene);
   EXPECT_EQ(groundPixel(image, 0, 0), grey(0.1));
+}
+
+TEST(Lights, FourPixelsAtATimeAndOneAtATimeGiveTheSameLitFrame) {
+  Scene scene;
+  scene.lighting().ambient = Eigen::Vector3f(0.1f, 0.1f, 0.1f);
+  std::vector<std::uint8_t> texels;
+  for (int i = 0; i < 16; ++i) texels.insert(texels.end(), {std::uint8_t(i * 16), 200, std::uint8_t(255 - i * 16)});
+  ShapeSpec floor = ShapeSpec::plane(4, 4, Eigen::Vector4f(1, 1, 1, 1));
+  floor.texture = std::make_shared<const Texture>(4, 4, texels);
+  scene.add(floor, Eigen::Isometry3d::Identity());
+  scene.add(ShapeSpec::box(0.3, 0.3, 0.3, kGrey), at(0.5, 0.3, 0.15));
+  scene.lighting().lights.push_back(pointLightAbove(10));
+  LocalLight spot = pointLightAbove(10);
+  spot.kind = LocalLight::Kind::Spot;
+  spot.position = Eigen::Vector3d(-0.5, 0.5, 1.5);
+  spot.spot_inner_rad = 0.4;
+  spot.spot_outer_rad = 1.2;
+  spot.spot_falloff = 1.5;
+  scene.lighting().lights.push_back(spot);
+  detail::setFourPixelTexturing(true);
+  const std::vector<std::uint8_t> four = fromAbove(scene);
+  detail::setFourPixelTexturing(false);
+  const std::vector<std::uint8_t> one = fromAbove(scene);
+  detail::setFourPixelTexturing(true);
+  EXPECT_TRUE(four == one);
 }
 
 int main(int argc, char** argv) {
