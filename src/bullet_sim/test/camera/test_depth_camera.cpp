@@ -141,6 +141,35 @@ TEST(DepthCamera, EveryPixelIsTheDistanceAlongTheOpticalAxisOrNaN) {
   EXPECT_TRUE(std::isnan(centre_row_left)) << "left of the wall's edge at y = 1.0 nothing is hit";
 }
 
+TEST(DepthCamera, ItsColourImageIsLitByTheWorldsPointLights) {
+  // The wall's near face (grey 0.7, facing the camera, the sun behind it) under the default
+  // ambient 0.4, and an AutoRace lamp 0.5 m in front of it on the optical axis.
+  bullet_sim::WorldSpec world;
+  world.shapes = {shapeOf(kWall, "wall"), shapeOf(kCrate, "crate")};
+  bullet_sim::LightSpec lamp;
+  lamp.pose.position = Vector3d(2.5, 0, 0.5);
+  lamp.diffuse = Eigen::Vector4f(0.5f, 0.5f, 0.5f, 1);
+  lamp.range_m = 20;
+  lamp.constant = 0.5;
+  lamp.linear = 0.01;
+  lamp.quadratic = 0.001;
+  auto centre = [](const bullet_sim::WorldSpec& w) {
+    bullet_sim::Simulation sim(w, bullet_sim::SimConfig{});
+    sim.spawnRobot("depth_bot", bullet_sim::parseRobot(depthFixtureText(), "depth_camera_robot.urdf"),
+                   Pose3{});
+    bullet_sim::CameraRenderer renderer(sim);
+    ImageData image;
+    DepthImageData depth;
+    renderer.render("depth_bot", 0, &image, &depth);
+    return static_cast<int>(image.data[(kHeight / 2) * image.step + 3 * (kWidth / 2)]);
+  };
+  // 0.7 x 0.4 = 0.28 -> 71 without; with it d = 0.5, cos = 1, 1 / (0.5 + 0.005 + 0.00025)
+  // = 1.979218: 0.7 (0.4 + 0.5 x 1.979218) = 0.972726 -> 248.
+  EXPECT_EQ(centre(world), 71);
+  world.lights.push_back(lamp);
+  EXPECT_EQ(centre(world), 248);
+}
+
 TEST(DepthCamera, BeyondTheFarClipNothingIsHit) {
   const Frame frame = renderFixture(depthFixtureWith("<far>8.0</far>", "<far>2.5</far>"));
   const int hits = expectDepthsMatch(frame, 2.5, 0.1, 6.0);

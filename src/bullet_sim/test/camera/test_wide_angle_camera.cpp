@@ -182,6 +182,36 @@ TEST(WideAngleCamera, TheEquidistantLensPutsTheRadiusInProportionToTheAngle) {
   }
 }
 
+TEST(WideAngleCamera, PointLightsLightItsCubeFacesPerPixel) {
+  // A grey box face 2.9 m ahead on the axis, ambient 0.1, the sun behind it; an AutoRace
+  // lamp (diffuse 0.5, attenuation 0.5 / 0.01 / 0.001) 0.5 m in front of the face.
+  bullet_sim::WorldSpec world;
+  world.ambient = Eigen::Vector4f(0.1f, 0.1f, 0.1f, 1.0f);
+  world.shapes.push_back(boxAt({0, 0, Eigen::Vector4f(0.5f, 0.5f, 0.5f, 1)}, 0));
+  bullet_sim::LightSpec lamp;
+  lamp.pose.position = kCamera + Vector3d(kDistance - 0.1 - 0.5, 0, 0);
+  lamp.diffuse = Eigen::Vector4f(0.5f, 0.5f, 0.5f, 1);
+  lamp.range_m = 20;
+  lamp.constant = 0.5;
+  lamp.linear = 0.01;
+  lamp.quadratic = 0.001;
+  auto centre = [](const bullet_sim::WorldSpec& w) {
+    bullet_sim::Simulation sim(w, bullet_sim::SimConfig{});
+    sim.spawnRobot("wide_bot", bullet_sim::parseRobot(wideAngleFixtureWith(), "wide_angle_robot.urdf"),
+                   Pose3{});
+    bullet_sim::CameraRenderer renderer(sim);
+    ImageData image;
+    renderer.render("wide_bot", 0, &image);
+    return static_cast<int>(pixel(image, kWidth / 2, kHeight / 2)[0]);
+  };
+  // Without the lamp: 0.5 x 0.1 = 0.05 -> 13.
+  EXPECT_EQ(centre(world), 13);
+  // With it, on the axis: d = 0.5, cos = 1, 1 / (0.5 + 0.005 + 0.00025) = 1.979218;
+  // 0.5 (0.1 + 0.5 x 1.979218) = 0.544805 -> 139.
+  world.lights.push_back(lamp);
+  EXPECT_NEAR(centre(world), 139, 1);
+}
+
 TEST(WideAngleCamera, CameraInfoIsThePinholeThatMatchesTheLensNearItsAxis) {
   const Frame frame = render(wideAngleFixtureWith(), {});
   // dr/dtheta at 0 = c1 f / c2 = 1.05 / (1.05 tan(0.5)) / 4, in half widths per radian.
