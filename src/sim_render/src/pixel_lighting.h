@@ -114,5 +114,29 @@ inline void lightFactorFour(const PixelLighting& lighting, __m128 x, __m128 y, _
 }
 #endif
 
+/// A light factor (colour times light) in 1/256 steps, as modulate() takes it.
+inline int factorStep(float factor) {
+  return static_cast<int>(std::min(std::max(factor, 0.0f), 256.0f) * 256.0f + 0.5f);
+}
+
+#if defined(__SSE2__)
+/// The colour-times-light factors of the four pixels from column `col` of a span (lanes
+/// at depth x along the optical axis; `ray_z` the row's ray), per channel.
+inline void litFactorsFour(const PixelLighting& lighting, __m128 x, int col, float inverse_fx, float cx,
+                    float ray_z, float factors[3][4]) {
+  const __m128 columns = _mm_add_ps(_mm_set1_ps(static_cast<float>(col)), _mm_set_ps(3, 2, 1, 0));
+  const __m128 y = _mm_mul_ps(
+      _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(0.0f), _mm_sub_ps(columns, _mm_set1_ps(cx))),
+                 _mm_set1_ps(inverse_fx)),
+      x);
+  const __m128 z = _mm_mul_ps(_mm_set1_ps(ray_z), x);
+  __m128 r, g, b;
+  lightFactorFour(lighting, x, y, z, &r, &g, &b);
+  _mm_store_ps(factors[0], _mm_mul_ps(r, _mm_set1_ps(lighting.colour.x())));
+  _mm_store_ps(factors[1], _mm_mul_ps(g, _mm_set1_ps(lighting.colour.y())));
+  _mm_store_ps(factors[2], _mm_mul_ps(b, _mm_set1_ps(lighting.colour.z())));
+}
+#endif
+
 }  // namespace detail
 }  // namespace sim_render

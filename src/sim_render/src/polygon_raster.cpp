@@ -1,5 +1,7 @@
 #include "polygon_raster.h"
 
+#include "span_walk.h"
+
 #include <Eigen/LU>
 
 #include <algorithm>
@@ -26,87 +28,6 @@ Eigen::Vector3d nearCrossing(const Eigen::Vector3d& inside, const Eigen::Vector3
   const double t = (inside.x() - near_m) / (inside.x() - outside.x());
   return inside + t * (outside - inside);
 }
-
-// Edge i -> j as e(u, v) = A u + B v + C. Swapping i and j negates A, B and C exactly, which
-// makes the span limits of neighbouring triangles bit-identical.
-struct Edge {
-  double a, b, c, inv_a;
-};
-
-Edge makeEdge(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double orientation) {
-  Edge e;
-  e.a = orientation * (p.y() - q.y());
-  e.b = orientation * (q.x() - p.x());
-  e.c = orientation * (p.x() * q.y() - q.x() * p.y());
-  e.inv_a = e.a != 0.0 ? 1.0 / e.a : 0.0;
-  return e;
-}
-
-template <class WriteSpan>
-void forEachSpan(const Eigen::Vector2d* screen, int count, const RasterTarget& target,
-                 WriteSpan&& write) {
-  double twice_area = 0.0;
-  double v_min = screen[0].y(), v_max = screen[0].y();
-  for (int i = 0; i < count; ++i) {
-    const Eigen::Vector2d& p = screen[i];
-    const Eigen::Vector2d& q = screen[(i + 1) % count];
-    twice_area += p.x() * q.y() - q.x() * p.y();
-    v_min = std::min(v_min, p.y());
-    v_max = std::max(v_max, p.y());
-  }
-  if (twice_area == 0.0 || !std::isfinite(twice_area)) return;
-  const double orientation = twice_area > 0.0 ? 1.0 : -1.0;
-  Edge edges[4];
-  for (int i = 0; i < count; ++i) edges[i] = makeEdge(screen[i], screen[(i + 1) % count], orientation);
-
-  const int row_begin = static_cast<int>(std::ceil(std::max(v_min, -1.0)));
-  const int row_end = static_cast<int>(std::floor(std::min(v_max, static_cast<double>(target.height))));
-  const double width = target.width;
-  for (int row = std::max(row_begin, 0); row <= std::min(row_end, target.height - 1); ++row) {
-    double lo = 0.0, hi = width;
-    bool empty = false;
-    for (int k = 0; k < count && !empty; ++k) {
-      const Edge& e = edges[k];
-      const double s = e.b * row + e.c;
-      if (e.a > 0.0) {
-        lo = std::max(lo, -s * e.inv_a);       // inside: u >= limit (limit included)
-      } else if (e.a < 0.0) {
-        hi = std::min(hi, -s * e.inv_a);       // inside: u < limit (limit excluded)
-      } else {
-        empty = s < 0.0 || (s == 0.0 && e.b < 0.0);
-      }
-    }
-    if (empty || !(lo < hi)) continue;
-    const int col_begin = static_cast<int>(std::ceil(lo));
-    const int col_end = static_cast<int>(std::ceil(hi));
-    if (col_begin >= col_end) continue;
-    write(row, col_begin, col_end);
-  }
-}
-
-/// A light factor (colour times light) in 1/256 steps, as modulate() takes it.
-int factorStep(float factor) {
-  return static_cast<int>(std::min(std::max(factor, 0.0f), 256.0f) * 256.0f + 0.5f);
-}
-
-#if defined(__SSE2__)
-/// The colour-times-light factors of the four pixels from column `col` of a span (lanes
-/// at depth x along the optical axis; `ray_z` the row's ray), per channel.
-void litFactorsFour(const PixelLighting& lighting, __m128 x, int col, float inverse_fx, float cx,
-                    float ray_z, float factors[3][4]) {
-  const __m128 columns = _mm_add_ps(_mm_set1_ps(static_cast<float>(col)), _mm_set_ps(3, 2, 1, 0));
-  const __m128 y = _mm_mul_ps(
-      _mm_mul_ps(_mm_sub_ps(_mm_set1_ps(0.0f), _mm_sub_ps(columns, _mm_set1_ps(cx))),
-                 _mm_set1_ps(inverse_fx)),
-      x);
-  const __m128 z = _mm_mul_ps(_mm_set1_ps(ray_z), x);
-  __m128 r, g, b;
-  lightFactorFour(lighting, x, y, z, &r, &g, &b);
-  _mm_store_ps(factors[0], _mm_mul_ps(r, _mm_set1_ps(lighting.colour.x())));
-  _mm_store_ps(factors[1], _mm_mul_ps(g, _mm_set1_ps(lighting.colour.y())));
-  _mm_store_ps(factors[2], _mm_mul_ps(b, _mm_set1_ps(lighting.colour.z())));
-}
-#endif
 
 }  // namespace
 
@@ -199,65 +120,6 @@ RasterResult PolygonRasterizer::draw(const Eigen::Vector3d& a, const Eigen::Vect
         pixel[1] = g;
         pixel[2] = bl;
       }
-    }
-  });
-  return clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
-}
-
-RasterResult PolygonRasterizer::drawLit(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                        const Eigen::Vector3d& c, const Eigen::Vector3d& normal,
-                                        const PixelLighting& lighting,
-                                        const RasterTarget& target) const {
-  Eigen::Vector2d screen[kMaxVertices];
-  Eigen::Vector3d plane;
-  bool clipped = false;
-  const int count = project(a, b, c, normal, screen, &plane, &clipped);
-  if (count == 0) return RasterResult::Culled;
-  const float du = static_cast<float>(plane.x());
-  const float inverse_far = inverse_far_;
-  const float inverse_fx = static_cast<float>(1.0 / fx_), inverse_fy = static_cast<float>(1.0 / fy_);
-  const float cx = static_cast<float>(cx_), cy = static_cast<float>(cy_);
-  const Eigen::Vector3f colour = lighting.colour;
-  forEachSpan(screen, count, target, [&](int row, int col_begin, int col_end) {
-    const float base = static_cast<float>(plane.x() * col_begin + plane.y() * row + plane.z());
-    const float ray_z = -(static_cast<float>(row) - cy) * inverse_fy;
-    float* depth = target.inverse_depth + static_cast<std::size_t>(row) * target.width;
-    std::uint8_t* pixel = target.rgb8 + (static_cast<std::size_t>(row) * target.width + col_begin) * 3;
-    int col = col_begin;
-#if defined(__SSE2__)
-    // Four pixels at a time, each lane as the loop below computes a pixel.
-    const __m128 lanes = _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f);
-    for (; col + 4 <= col_end; col += 4, pixel += 12) {
-      const __m128 k = _mm_add_ps(_mm_set1_ps(static_cast<float>(col - col_begin)), lanes);
-      const __m128 inverse_depth = _mm_add_ps(_mm_set1_ps(base), _mm_mul_ps(_mm_set1_ps(du), k));
-      const __m128 stored = _mm_loadu_ps(depth + col);
-      const __m128 nearer = _mm_and_ps(_mm_cmpgt_ps(inverse_depth, stored),
-                                       _mm_cmpge_ps(inverse_depth, _mm_set1_ps(inverse_far)));
-      const int drawn = _mm_movemask_ps(nearer);
-      if (drawn == 0) continue;
-      _mm_storeu_ps(depth + col, _mm_or_ps(_mm_and_ps(nearer, inverse_depth),
-                                           _mm_andnot_ps(nearer, stored)));
-      alignas(16) float factors[3][4];
-      litFactorsFour(lighting, _mm_div_ps(_mm_set1_ps(1.0f), inverse_depth), col, inverse_fx, cx,
-                     ray_z, factors);
-      for (int lane = 0; lane < 4; ++lane) {
-        if (!(drawn & (1 << lane))) continue;
-        for (int channel = 0; channel < 3; ++channel) {
-          pixel[3 * lane + channel] = toByte(factors[channel][lane]);
-        }
-      }
-    }
-#endif
-    for (; col < col_end; ++col, pixel += 3) {
-      const float inverse_depth = base + du * static_cast<float>(col - col_begin);
-      if (!(inverse_depth > depth[col] && inverse_depth >= inverse_far)) continue;
-      depth[col] = inverse_depth;
-      const float x = 1.0f / inverse_depth;
-      const Eigen::Vector3f light = lightFactorAt(
-          lighting, x, -(static_cast<float>(col) - cx) * inverse_fx * x, ray_z * x);
-      pixel[0] = toByte(colour.x() * light.x());
-      pixel[1] = toByte(colour.y() * light.y());
-      pixel[2] = toByte(colour.z() * light.z());
     }
   });
   return clipped ? RasterResult::DrawnClipped : RasterResult::Drawn;
