@@ -6,6 +6,7 @@ import os
 import queue
 import signal
 import subprocess
+import tempfile
 import threading
 import time
 import unittest
@@ -100,7 +101,6 @@ class TestLaunchesHeadless(unittest.TestCase):
         self.run_headless('roundTrack_simulation.launch', headless_env())
 
     def test_slam_launch_is_not_taken_down_by_its_required_rviz(self):
-        import tempfile
         with tempfile.TemporaryDirectory(prefix='nav_stand_ins_') as folder:
             env = headless_env(base=with_stand_ins(folder))
             lines = self.run_headless('roundTrack_slam.launch', env)
