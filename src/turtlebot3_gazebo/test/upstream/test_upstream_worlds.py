@@ -7,12 +7,13 @@ clone's turtlebot3_gazebo and turtlebot3_description; without it the tests are s
 say so. Nothing of the clone is part of this repository: the expected values are computed
 here from the clone's own files (gazebo_truth.py), never from the simulator.
 """
+import json
 import math
 import os
 import signal
 import subprocess
 import sys
-import time
+import tempfile
 import unittest
 
 import cv2
@@ -44,10 +45,17 @@ class Launched:
         setup = os.path.join(UPSTREAM, 'devel', 'setup.bash')
         self.env = env
         self.setup = setup
+        self.log = tempfile.TemporaryFile(mode='w+')
         self.process = subprocess.Popen(
             ['bash', '-c', 'source %s && exec roslaunch -p %d turtlebot3_gazebo %s'
-             % (setup, PORT, launch)], env=env, stdout=subprocess.PIPE,
+             % (setup, PORT, launch)], env=env, stdout=self.log,
             stderr=subprocess.STDOUT, universal_newlines=True, start_new_session=True)
+
+    def output(self):
+        """What roslaunch and its nodes have printed so far."""
+        self.log.flush()
+        self.log.seek(0)
+        return self.log.read()
 
     def run(self, script, timeout=60):
         """A Python snippet run against the launch's master; returns its stdout."""
@@ -108,42 +116,69 @@ def pose_matrix(values):
     return T
 
 
+def compare_with_ray_cast(test, data, world_path, model_roots):
+    """The scan of `data` (READ_SCAN_AND_POSE) against the Burger's lidar rays cast in the
+    world file's geometry; returns (finite rays simulated, finite rays cast)."""
+    T = pose_matrix(data['pose'])
+    yaw = math.atan2(T[1, 0], T[0, 0])
+    # The Burger's base_scan: 0.010 + 0.172 above the footprint, 0.032 behind its centre.
+    lidar = T[:3, 3] + T[:3, :3] @ np.array([-0.032, 0, 0.182])
+    shapes = gazebo_truth.world_shapes(world_path, model_roots)
+    truth = gazebo_truth.lidar_ranges(shapes, lidar[0], lidar[1], lidar[2], yaw,
+                                      samples=len(data['ranges']),
+                                      angle_min=data['angle_min'], angle_max=data['angle_max'],
+                                      range_min=data['range_min'], range_max=data['range_max'])
+    sim = [r if r is not None else math.inf for r in data['ranges']]
+    finite_truth = sum(map(math.isfinite, truth))
+    finite_sim = sum(map(math.isfinite, sim))
+    # Readings near range_max flip between finite and inf with the 0.01 m noise.
+    test.assertLessEqual(abs(finite_sim - finite_truth), 3, (finite_sim, finite_truth))
+    errors = sorted(abs(a - b) for a, b in zip(sim, truth)
+                    if math.isfinite(a) and math.isfinite(b))
+    test.assertLess(errors[len(errors) // 2], 0.015)      # noise sd 0.01: median 0.0067
+    test.assertLess(errors[int(0.95 * len(errors))], 0.04)
+    print('finite rays %d (Gazebo %d); |error| median %.4f, 95th %.4f m'
+          % (finite_sim, finite_truth, errors[len(errors) // 2], errors[int(0.95 * len(errors))]))
+    return sim, truth
+
+
 @unittest.skipUnless(UPSTREAM and upstream_package('turtlebot3_gazebo'),
                      'MOBILITY_UPSTREAM_WS is not set to a built workspace with the clone of '
                      'turtlebot3_simulations: the upstream worlds are not tried')
 class UpstreamWorlds(unittest.TestCase):
     def test_turtlebot3_world_scan_is_the_ray_cast_of_its_files(self):
-        import json
         gazebo = upstream_package('turtlebot3_gazebo')
         with Launched('turtlebot3_world.launch') as launched:
             data = json.loads(launched.run(READ_SCAN_AND_POSE % 'turtlebot3_burger'))
-        T = pose_matrix(data['pose'])
-        yaw = math.atan2(T[1, 0], T[0, 0])
-        # The Burger's base_scan: 0.010 + 0.172 above the footprint, 0.032 behind its centre.
-        lidar = T[:3, 3] + T[:3, :3] @ np.array([-0.032, 0, 0.182])
-        shapes = gazebo_truth.world_shapes(os.path.join(gazebo, 'worlds', 'turtlebot3_world.world'),
-                                           [os.path.join(gazebo, 'models')])
-        truth = gazebo_truth.lidar_ranges(shapes, lidar[0], lidar[1], lidar[2], yaw,
-                                          samples=len(data['ranges']),
-                                          angle_min=data['angle_min'], angle_max=data['angle_max'],
-                                          range_min=data['range_min'], range_max=data['range_max'])
-        sim = [r if r is not None else math.inf for r in data['ranges']]
-        finite_truth = sum(map(math.isfinite, truth))
-        finite_sim = sum(map(math.isfinite, sim))
-        # Readings near range_max flip between finite and inf with the 0.01 m noise.
-        self.assertLessEqual(abs(finite_sim - finite_truth), 3, (finite_sim, finite_truth))
-        errors = sorted(abs(a - b) for a, b in zip(sim, truth)
-                        if math.isfinite(a) and math.isfinite(b))
-        self.assertLess(errors[len(errors) // 2], 0.015)      # noise sd 0.01: median 0.0067
-        self.assertLess(errors[int(0.95 * len(errors))], 0.04)
-        print('finite rays %d (Gazebo %d); |error| median %.4f, 95th %.4f m'
-              % (finite_sim, finite_truth, errors[len(errors) // 2], errors[int(0.95 * len(errors))]))
+        sim, truth = compare_with_ray_cast(
+            self, data, os.path.join(gazebo, 'worlds', 'turtlebot3_world.world'),
+            [os.path.join(gazebo, 'models')])
         behind = len(sim) // 2
         self.assertAlmostEqual(sim[behind], truth[behind], delta=0.04)
 
+    def test_stage_1_runs_its_xacro_command_and_sees_the_square(self):
+        """The training fork's stage launches (of the Melodic era) call
+        `$(find xacro)/xacro.py`, ROBOTIS's noetic ones `$(find xacro)/xacro`: either way the
+        robot comes up where the launch puts it and its lidar sees the square's walls."""
+        gazebo = upstream_package('turtlebot3_gazebo')
+        with open(os.path.join(gazebo, 'launch', 'turtlebot3_stage_1.launch')) as f:
+            deprecated_name = '$(find xacro)/xacro.py' in f.read()
+        with Launched('turtlebot3_stage_1.launch') as launched:
+            data = json.loads(launched.run(READ_SCAN_AND_POSE % 'turtlebot3_burger'))
+            output = launched.output()
+        self.assertNotIn('RLException', output)
+        self.assertNotIn('no such command', output)
+        self.assertEqual('xacro.py is deprecated; please use xacro instead' in output,
+                         deprecated_name)
+        self.assertAlmostEqual(data['pose'][0], 0.0, delta=0.01)   # the launch's x_pos, y_pos
+        self.assertAlmostEqual(data['pose'][1], 0.0, delta=0.01)
+        sim, _ = compare_with_ray_cast(
+            self, data, os.path.join(gazebo, 'worlds', 'turtlebot3_stage_1.world'),
+            [os.path.join(gazebo, 'models')])
+        self.assertGreater(sum(map(math.isfinite, sim)), 300)  # walls all round within 3.5 m
+
     def test_autorace_camera_shows_the_course_lanes_where_the_texture_puts_them(self):
         import base64
-        import json
         gazebo = upstream_package('turtlebot3_gazebo')
         with Launched('turtlebot3_autorace.launch') as launched:
             image = json.loads(launched.run(READ_IMAGE % '/camera/image'))
