@@ -40,18 +40,18 @@ class TestImageProc(unittest.TestCase):
         env = dict(os.environ, ROS_MASTER_URI='http://localhost:%d' % self.port,
                    PATH='/usr/bin:/bin:' + os.environ.get('PATH', ''))
         self.launch = subprocess.Popen(
-            ['roslaunch', '-p', str(self.port), os.path.join(HERE, 'autorace', 'image_proc.launch')],
-            env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, universal_newlines=True,
-            start_new_session=True)
+            ['roslaunch', '-p', str(self.port),
+             os.path.join(HERE, 'autorace', 'image_proc.launch')],
+            env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
         os.environ['ROS_MASTER_URI'] = env['ROS_MASTER_URI']
 
     def tearDown(self):
         os.killpg(self.launch.pid, signal.SIGINT)
         try:
-            self.output, _ = self.launch.communicate(timeout=20)
+            self.launch.wait(timeout=20)
         except subprocess.TimeoutExpired:
             os.killpg(self.launch.pid, signal.SIGKILL)
-            self.output, _ = self.launch.communicate()
+            self.launch.wait()
 
     def test_image_rect_color_is_the_undistorted_image(self):
         import rospy
