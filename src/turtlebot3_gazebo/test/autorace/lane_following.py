@@ -191,7 +191,9 @@ class TestLaneFollowing(unittest.TestCase):
             if detect_input.count % DETECT_EVERY == 0:
                 expected = detect_input.count // DETECT_EVERY
                 wait(lambda: lane.count >= expected and commands.count >= expected, 60,
-                     '/detect/lane and /cmd_vel for frame %d' % detect_input.count)
+                     '/detect/lane and /cmd_vel for frame %d (detect_lane raising on every '
+                     'frame? np.int: README, AutoRace step 1; logs: %s)'
+                     % (detect_input.count, self.logs))
             x, y = self.pose()
             for paint, d in self.clearance(x, y).items():
                 closest[paint] = min(closest[paint], d)
