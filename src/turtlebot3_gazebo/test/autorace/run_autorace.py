@@ -2,7 +2,9 @@
 """Runs lane_following.py against ROBOTIS's turtlebot3_autorace_2020.launch on a master of
 its own, as the user's overlay has it built (src/turtlebot3_gazebo/README.md, Autonomous
 driving). Its Gazebo window (gzclient) is started without a display: it exits, the rest
-runs.
+runs. The overlay is the one MOBILITY_AUTORACE_WS names (its devel/setup.bash is sourced for
+every command: `make`'s test targets set up this workspace's environment alone), else the
+environment's own.
 
     run_autorace.py [--mode lane|control] [--runs N] [--figures-dir DIR]
 
@@ -32,21 +34,35 @@ def environment():
                 TURTLEBOT3_MODEL='burger', DISPLAY='')
 
 
+def in_overlay(words):
+    """A command run with MOBILITY_AUTORACE_WS's setup sourced first, when it is set."""
+    overlay = os.environ.get('MOBILITY_AUTORACE_WS', '')
+    if not overlay:
+        return words
+    setup = os.path.join(overlay, 'devel', 'setup.bash')
+    return ['bash', '-c', 'source "$0" && exec "$@"', setup] + words
+
+
 def missing():
     """What of the overlay is not built, as a sentence; '' when all is there."""
     env = environment()
+    overlay = os.environ.get('MOBILITY_AUTORACE_WS', '')
+    if overlay and not os.path.exists(os.path.join(overlay, 'devel', 'setup.bash')):
+        return 'MOBILITY_AUTORACE_WS=%s has no devel/setup.bash (not built)' % overlay
     absent = [p for p in NEEDED if subprocess.run(
-        ['rospack', 'find', p], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-        env=env).returncode != 0]
-    gazebo = subprocess.run(['rospack', 'find', 'turtlebot3_gazebo'], stdout=subprocess.PIPE,
-                            stderr=subprocess.DEVNULL, universal_newlines=True, env=env)
+        in_overlay(['rospack', 'find', p]), stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL, env=env).returncode != 0]
+    gazebo = subprocess.run(in_overlay(['rospack', 'find', 'turtlebot3_gazebo']),
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                            universal_newlines=True, env=env)
     if not os.path.exists(os.path.join(gazebo.stdout.strip(), 'launch',
                                        'turtlebot3_autorace_2020.launch')):
         absent.append("ROBOTIS's turtlebot3_gazebo (turtlebot3_simulations, noetic)")
     if not absent:
         return ''
-    return ('not built: %s (build the AutoRace overlay and source it: '
-            'src/turtlebot3_gazebo/README.md, Autonomous driving)' % ', '.join(absent))
+    return ('not built: %s (build the AutoRace overlay and set MOBILITY_AUTORACE_WS to it, '
+            'or source it: src/turtlebot3_gazebo/README.md, Autonomous driving)'
+            % ', '.join(absent))
 
 
 def run_once(mode, figures_file, log_dir):
@@ -54,12 +70,14 @@ def run_once(mode, figures_file, log_dir):
     port = free_port()
     env = dict(environment(), ROS_MASTER_URI='http://localhost:%d' % port)
     sim_log = open(os.path.join(log_dir, 'turtlebot3_autorace_2020.log'), 'w')
-    sim = subprocess.Popen(['roslaunch', '-p', str(port), 'turtlebot3_gazebo',
-                            'turtlebot3_autorace_2020.launch'], env=env, stdout=sim_log,
-                           stderr=subprocess.STDOUT, start_new_session=True)
+    sim = subprocess.Popen(in_overlay(['roslaunch', '-p', str(port), 'turtlebot3_gazebo',
+                                       'turtlebot3_autorace_2020.launch']),
+                           env=env, stdout=sim_log, stderr=subprocess.STDOUT,
+                           start_new_session=True)
     try:
-        test = subprocess.run(['/usr/bin/python3', os.path.join(HERE, 'lane_following.py'),
-                               '--mode', mode, '--figures', figures_file],
+        test = subprocess.run(in_overlay(['/usr/bin/python3',
+                                          os.path.join(HERE, 'lane_following.py'),
+                                          '--mode', mode, '--figures', figures_file]),
                               env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               universal_newlines=True, timeout=LAUNCH_TIMEOUT_S)
         return test.returncode, test.stdout
