@@ -34,12 +34,14 @@ class TestAutoRace(unittest.TestCase):
         figures_file = os.path.join(self.folder, mode + '.json')
         if os.path.exists(figures_file):
             os.remove(figures_file)
-        code, output = run_autorace.run_once(mode, figures_file, self.folder)
+        logs = tempfile.mkdtemp(prefix='autorace_%s_logs_' % mode)  # kept if the run fails
+        code, output = run_autorace.run_once(mode, figures_file, logs)
         figures = json.load(open(figures_file)) if os.path.exists(figures_file) else None
         if figures:
             print('%s figures: %s' % (mode, {k: v for k, v in figures.items() if k != 'trace'}))
-        self.assertEqual(code, 0, output[-4000:])
+        self.assertEqual(code, 0, 'launch output in %s\n%s' % (logs, output[-4000:]))
         self.assertIsNotNone(figures, 'no figures: the test did not finish\n' + output[-4000:])
+        shutil.rmtree(logs, ignore_errors=True)
 
     def test_lane_following_through_the_first_left_turn(self):
         self.run_mode('lane')

@@ -50,9 +50,11 @@ PIPELINE = [('turtlebot3_autorace_camera', 'intrinsic_camera_calibration.launch'
             ('turtlebot3_autorace_camera', 'extrinsic_camera_calibration.launch'),
             ('turtlebot3_autorace_detect', 'detect_lane.launch'),
             ('turtlebot3_autorace_driving', 'turtlebot3_autorace_control_lane.launch')]
-# Each link of the chain: (topic, who must publish it, who must subscribe, what is missing)
+# Each link of the chain: (topic, who must publish it, who must subscribe, what is missing).
+# image_proc's nodelets advertise at load and subscribe only once their outputs are read.
 CHAIN = [
-    ('/camera/image', None, 'image_proc', 'image_proc does not run (Debian 12: libimage-proc-dev)'),
+    ('/camera/image_rect_color', 'image_proc', None,
+     'image_proc loaded no nodelet (Debian: libimage-proc-dev)'),
     ('/camera/image_rect_color/compressed', 'image_proc', 'image_projection',
      'image_proc offers no compressed transport: compressed_image_transport is not built'),
     ('/camera/image_projected/compressed', 'image_projection', 'image_compensation_projection', ''),
@@ -63,7 +65,8 @@ CHAIN = [
 # 6th, ... frame it receives (measured); the others it drops at once.
 DETECT_EVERY = 3
 FIGURES = {}
-OPTIONS = argparse.Namespace(mode='lane', figures='', sim_limit=90.0, min_clearance=0.04)
+OPTIONS = argparse.Namespace(mode='lane', figures='', logs='', sim_limit=90.0,
+                             min_clearance=0.04)
 
 
 def wait(condition, timeout_wall_s, what):
@@ -104,7 +107,7 @@ class TestLaneFollowing(unittest.TestCase):
         cls.dt_s = rospy.ServiceProxy('/gazebo/get_physics_properties',
                                       GetPhysicsProperties)().time_step
         cls.processes = []
-        cls.logs = tempfile.mkdtemp(prefix='autorace_lane_')
+        cls.logs = OPTIONS.logs or tempfile.mkdtemp(prefix='autorace_lane_')
 
     @classmethod
     def tearDownClass(cls):
@@ -139,9 +142,10 @@ class TestLaneFollowing(unittest.TestCase):
             for topic, publisher, subscriber, hint in CHAIN:
                 if publisher and not any(n.endswith('/' + publisher)
                                          for n in pubs.get(topic, [])):
-                    return '%s publishing %s %s' % (publisher, topic, hint)
-                if not any(n.endswith('/' + subscriber) for n in subs.get(topic, [])):
-                    return '%s subscribing to %s %s' % (subscriber, topic, hint)
+                    return 'no %s publishing %s%s' % (publisher, topic, hint and ': ' + hint)
+                if subscriber and not any(n.endswith('/' + subscriber)
+                                          for n in subs.get(topic, [])):
+                    return 'no %s subscribing to %s%s' % (subscriber, topic, hint and ': ' + hint)
             return None
         end = time.monotonic() + 180
         while missing() and time.monotonic() < end:
@@ -252,6 +256,7 @@ if __name__ == '__main__':
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--mode', choices=('lane', 'control'), default='lane')
     parser.add_argument('--figures', default='')
+    parser.add_argument('--logs', default='', help='folder for the launch files\' output')
     parser.add_argument('--sim-limit', type=float, default=90.0)
     parser.add_argument('--min-clearance', type=float, default=0.04)
     OPTIONS = parser.parse_args()

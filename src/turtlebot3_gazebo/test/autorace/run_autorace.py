@@ -77,7 +77,8 @@ def run_once(mode, figures_file, log_dir):
     try:
         test = subprocess.run(in_overlay(['/usr/bin/python3',
                                           os.path.join(HERE, 'lane_following.py'),
-                                          '--mode', mode, '--figures', figures_file]),
+                                          '--mode', mode, '--figures', figures_file,
+                                          '--logs', log_dir]),
                               env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               universal_newlines=True, timeout=LAUNCH_TIMEOUT_S)
         return test.returncode, test.stdout
