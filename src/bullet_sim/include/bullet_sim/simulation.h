@@ -32,6 +32,23 @@ struct SimConfig {
   unsigned threads = 0;
 };
 
+/// A link's mass properties and gravity as set_link_properties changes them (the URDF's
+/// <inertial> until then).
+struct LinkProperties {
+  double mass_kg = 0;
+  Pose3 com_in_link;  ///< centre of mass and inertial axes in the link frame
+  double ixx = 0, ixy = 0, ixz = 0, iyy = 0, iyz = 0, izz = 0;  ///< about the COM, inertial axes
+  bool gravity = true;  ///< whether gravity acts on the link
+};
+
+/// What set_joint_properties may change on a hinge. Unset fields keep their value.
+struct JointDynamics {
+  std::optional<double> damping_nms_per_rad;  ///< viscous: torque -damping * rate, each step
+  std::optional<double> lower_rad, upper_rad; ///< limits (both -> lower > upper: no limit)
+  std::optional<double> erp, cfm, stop_erp, stop_cfm;  ///< Bullet's hinge parameters
+  std::optional<double> motor_velocity_radps, motor_max_torque_nm;  ///< a motor (both or none)
+};
+
 /// How a model stands: upright or tipped over, free or pushed into a static body.
 struct ModelCondition {
   double tilt_rad = 0;           ///< angle between the root link's z axis and the world's
@@ -158,6 +175,32 @@ class Simulation {
   void setPhysicsStep(double step_s);
   Eigen::Vector3d gravity() const;
   void setGravity(const Eigen::Vector3d& gravity_mps2);
+  SolverSettings solverSettings() const;
+  /// From the next step on, in every world (kept across reset()).
+  /// @throws std::invalid_argument naming the field out of range.
+  void setSolverSettings(const SolverSettings& settings);
+
+  // Lights of the world (world().lights), by name: what the camera lights the scene with.
+  /// Replaces the light of `light.name`; false (nothing changed) when there is none.
+  bool setLight(const LightSpec& light);
+  /// Removes the light; false when there is none of that name.
+  bool deleteLight(const std::string& name);
+
+  // Link and joint properties (set_link_properties, set_joint_properties). Changes are
+  // kept across reset(), as Gazebo keeps them. Both throw std::out_of_range for an unknown
+  // robot, link or joint, and std::invalid_argument naming the field that cannot be
+  // honoured (nothing is changed then).
+  LinkProperties linkProperties(const std::string& robot, const std::string& link) const;
+  /// Mass and inertia of a link that is a body of its own (not merged with others by fixed
+  /// joints), about an unchanged centre of mass and diagonal in the body's principal axes;
+  /// gravity per body.
+  void setLinkProperties(const std::string& robot, const std::string& link,
+                         const LinkProperties& properties);
+  /// The damping, limits, Bullet parameters and motor of a joint as last set (limits from
+  /// the URDF until then).
+  JointDynamics jointDynamics(const std::string& robot, const std::string& joint) const;
+  void setJointDynamics(const std::string& robot, const std::string& joint,
+                        const JointDynamics& dynamics);
 
  private:
   struct Impl;

@@ -27,6 +27,19 @@ struct TextureRef {
   Eigen::Vector2f uv_offset{0.0f, 0.0f};
 };
 
+/// Bullet's constraint solver settings that can be changed while running
+/// (btContactSolverInfo: Bullet's defaults). get/set_physics_properties show them in ODE's
+/// fields: sor_pgs_iters, sor_pgs_w, erp, cfm.
+struct SolverSettings {
+  int iterations = 10;  ///< solver iterations per step (>= 1)
+  double sor = 1.0;     ///< successive over-relaxation factor (> 0)
+  double erp = 0.2;     ///< error reduction of joints and deep contacts, [0, 1]
+  double cfm = 0.0;     ///< constraint force mixing added to every constraint (>= 0)
+  bool operator==(const SolverSettings& o) const {
+    return iterations == o.iterations && sor == o.sor && erp == o.erp && cfm == o.cfm;
+  }
+};
+
 }  // namespace bullet_sim
 
 #endif  // BULLET_SIM_TYPES_H

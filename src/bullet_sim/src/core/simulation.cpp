@@ -209,9 +209,11 @@ void Simulation::reset() {
     by_id[entry.second->id] = {entry.first, entry.second.get()};
   }
   impl_->physics = std::make_unique<PhysicsWorlds>(impl_->world, Impl::threadCount(impl_->cfg));
+  impl_->physics->setSolver(impl_->solver);
   for (auto& entry : by_id) {
     Impl::Robot& r = *entry.second.second;
     impl_->buildPhysics(&r, planRobot(r.spec));
+    impl_->applyPropertyChanges(r);
     impl_->physics->attach(r.id, r.physics.get());
     if (r.drive) r.drive->reset();
     r.schedule.restart();

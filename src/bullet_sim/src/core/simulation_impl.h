@@ -38,6 +38,9 @@ struct Simulation::Impl {
     std::vector<std::mt19937_64> ray_rngs, imu_rngs;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;
+    /// set_link_properties / set_joint_properties changes, put back after a reset().
+    std::map<std::string, LinkProperties> link_changes;
+    std::map<std::string, JointDynamics> joint_changes;
   };
 
   Impl(const WorldSpec& w, const SimConfig& c)
@@ -78,6 +81,9 @@ struct Simulation::Impl {
   /// Sim time at the end of step k (counted from the last change of the physics step).
   double timeAtStep(uint64_t k) const { return epoch_s + static_cast<double>(k) * cfg.physics_step_s; }
 
+  /// Applies robot r's link and joint property changes to its (rebuilt) physics.
+  void applyPropertyChanges(Robot& r) const;
+
   /// Adds the external wrenches and joint efforts acting in the coming step.
   void applyExternalForces();
   /// Robot r's own work before step k: its command's timeout, its drive's update, its
@@ -101,6 +107,7 @@ struct Simulation::Impl {
   int next_robot_id = 0;
   std::vector<std::string> pending_warnings;  ///< for Simulation::takeWarnings()
   ExternalForces forces;
+  SolverSettings solver;  ///< as last set, given to every new PhysicsWorlds
 };
 
 }  // namespace bullet_sim

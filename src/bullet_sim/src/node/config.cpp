@@ -39,6 +39,10 @@ Config readConfig(const ros::NodeHandle& nh, const ros::NodeHandle& private_nh) 
   private_nh.param("spawn_yaw", config.spawn_yaw_rad, config.spawn_yaw_rad);
   private_nh.param("status_period", config.status_period_s, config.status_period_s);
   private_nh.param("model_states_rate", config.model_states_rate_hz, config.model_states_rate_hz);
+  private_nh.param("enable_ros_network", config.enable_ros_network, config.enable_ros_network);
+  private_nh.param("step_simulation_service", config.step_service, config.step_service);
+  private_nh.param("spawn_model_service", config.spawn_model_service, config.spawn_model_service);
+  config.markers_param = private_nh.resolveName("markers");
 
   require(std::isfinite(config.physics_step_s) && config.physics_step_s >= 0 &&
               config.physics_step_s <= 0.1,

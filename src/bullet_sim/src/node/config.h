@@ -29,6 +29,14 @@ struct Config {
   double status_period_s = 1;        ///< ~status_period: wall seconds between status lines
   double model_states_rate_hz = 100; ///< ~model_states_rate: /gazebo/model_states, link_states
   std::string robot_description;     ///< the URDF (robot_description), read when robot_name is set
+  /// ~enable_ros_network (gazebo_ros's): false leaves /clock and the robots' own topics
+  /// only, no /gazebo service or topic
+  bool enable_ros_network = true;
+  bool step_service = false;         ///< ~step_simulation_service: /gazebo/step_simulation
+  bool spawn_model_service = false;  ///< ~spawn_model_service: /gazebo/spawn_model
+  /// The full name of ~markers, read while running: /gazebo/world_markers and
+  /// model_markers are offered while it is true (gzclient sets it while it runs).
+  std::string markers_param;
 };
 
 /// Reads the private parameters from `private_nh` and, when ~robot_name is set,

@@ -7,7 +7,9 @@
 #include "runner/status_reporter.h"
 #include "services/link_joint_services.h"
 #include "services/model_services.h"
+#include "services/physics_reconfigure.h"
 #include "services/physics_services.h"
+#include "services/property_services.h"
 #include "topics/world_markers_io.h"
 
 #include <bullet_sim/description/world_spec.h>
@@ -16,7 +18,10 @@
 #include <ros/callback_queue.h>
 #include <ros/node_handle.h>
 
+#include <chrono>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace bullet_sim_node {
 
@@ -42,14 +47,23 @@ class SimulatorNode {
   void spinOnce(ros::CallbackQueue& callbacks);
 
  private:
+  /// Offers or withdraws the marker topics as ~markers says (checked a few times a second).
+  void updateMarkers();
+
   std::unique_ptr<bullet_sim::Simulation> sim_;
   std::unique_ptr<SimRunner> runner_;
   Pacer pacer_;
   std::unique_ptr<PhysicsServices> physics_services_;
   std::unique_ptr<ModelServices> model_services_;
   std::unique_ptr<LinkJointServices> link_joint_services_;
+  std::unique_ptr<PropertyServices> property_services_;
   std::unique_ptr<StatusReporter> status_;
-  std::unique_ptr<WorldMarkersIo> world_markers_;
+  std::unique_ptr<PhysicsReconfigure> physics_reconfigure_;
+  std::unique_ptr<WorldMarkersIo> world_markers_;  ///< null while ~markers is not true
+  ros::NodeHandle gazebo_nh_;
+  std::string markers_param_;
+  std::vector<std::string> world_models_;  ///< the world's movable models, drawn with it
+  std::chrono::steady_clock::time_point last_markers_check_;
 };
 
 }  // namespace bullet_sim_node

@@ -26,6 +26,9 @@ SERVICES = {
     "clear_body_wrenches": gz.BodyRequest, "clear_joint_forces": gz.JointRequest,
     "pause_physics": Empty, "unpause_physics": Empty, "reset_simulation": Empty,
     "reset_world": Empty, "step_simulation": StepSimulation,
+    "set_link_properties": gz.SetLinkProperties, "set_joint_properties": gz.SetJointProperties,
+    "get_light_properties": gz.GetLightProperties,
+    "set_light_properties": gz.SetLightProperties, "delete_light": gz.DeleteLight,
 }
 
 BOX_MASS_KG = 0.5

@@ -247,10 +247,22 @@ class GazeboApi(unittest.TestCase):
                    props.ode_config)
         self.fails("set_physics_properties", "gravity.z", 0.001, 1000.0, Vector3(0, 0, NAN),
                    props.ode_config)
+        # Bullet's solver takes iterations, SOR, ERP and CFM; ODE's other fields are refused.
+        changed = self.ok("get_physics_properties").ode_config
+        changed.sor_pgs_iters, changed.erp = 50, 0.3
+        try:
+            self.ok("set_physics_properties", 0.001, 1000.0, Vector3(0, 0, -9.8), changed)
+            solver = self.ok("get_physics_properties").ode_config
+            self.assertEqual((solver.sor_pgs_iters, solver.erp), (50, 0.3))
+        finally:
+            self.ok("set_physics_properties", 0.001, 1000.0, Vector3(0, 0, -9.8), props.ode_config)
+        changed.max_contacts = 100
+        self.fails("set_physics_properties", "ode_config.max_contacts", 0.001, 1000.0,
+                   Vector3(0, 0, -9.8), changed)
         changed = props.ode_config
-        changed.sor_pgs_iters = 50
-        self.fails("set_physics_properties", "ode_config", 0.001, 1000.0, Vector3(0, 0, -9.8),
-                   changed)
+        changed.sor_pgs_iters = 0
+        self.fails("set_physics_properties", "iterations 0", 0.001, 1000.0,
+                   Vector3(0, 0, -9.8), changed)
 
     def wrench(self, body, frame, force, duration_s):
         return self.call("apply_body_wrench", body, frame, Point(),

@@ -52,6 +52,7 @@ PhysicsRobot::PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPl
   }
   joint_angles_.assign(hinges_.size(), 0.0);
   motors_.assign(hinges_.size(), Motor());
+  damping_.assign(hinges_.size(), 0.0);
   last_raw_angles_.assign(hinges_.size(), 0.0);
 }
 
@@ -308,7 +309,53 @@ void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max
   m.max_torque_nm = max_torque_nm;
 }
 
+void PhysicsRobot::setBodyMass(size_t body, double mass_kg, const Eigen::Vector3d& principal) {
+  btRigidBody& rb = *bodies_.at(body).rigid;
+  rb.setMassProps(mass_kg, toBt(principal));
+  rb.updateInertiaTensor();
+  rb.activate(true);
+  plan_.bodies[body].mass_kg = mass_kg;
+  plan_.bodies[body].principal_inertia = principal;
+}
+
+void PhysicsRobot::setBodyGravity(size_t body, bool on) {
+  btRigidBody& rb = *bodies_.at(body).rigid;
+  // Flagged, the world's setGravity (and adding the body to another world) leaves it be.
+  if (on) {
+    rb.setFlags(rb.getFlags() & ~BT_DISABLE_WORLD_GRAVITY);
+    rb.setGravity(world_->getGravity());
+  } else {
+    rb.setFlags(rb.getFlags() | BT_DISABLE_WORLD_GRAVITY);
+    rb.setGravity(btVector3(0, 0, 0));
+  }
+  rb.activate(true);
+}
+
+void PhysicsRobot::setJointDamping(size_t joint, double damping_nms_per_rad) {
+  damping_.at(joint) = damping_nms_per_rad;
+}
+
+void PhysicsRobot::setJointLimits(size_t joint, double lower_rad, double upper_rad) {
+  hinges_.at(joint)->setLimit(lower_rad, upper_rad);
+  plan_.joints[joint].limited = lower_rad <= upper_rad;
+  plan_.joints[joint].lower = lower_rad;
+  plan_.joints[joint].upper = upper_rad;
+  wake();
+}
+
+void PhysicsRobot::setJointParam(size_t joint, int param, double value) {
+  hinges_.at(joint)->setParam(param, static_cast<btScalar>(value), -1);
+}
+
 void PhysicsRobot::applyMotors(double dt_s) {
+  for (size_t i = 0; i < damping_.size(); ++i) {
+    if (damping_[i] == 0) continue;
+    btHingeConstraint& h = *hinges_[i];
+    if (!h.getRigidBodyA().isActive() && !h.getRigidBodyB().isActive()) continue;
+    const btVector3 torque = jointAxisInWorld(i) * (-damping_[i] * jointVelocity(i));
+    h.getRigidBodyB().applyTorque(torque);
+    h.getRigidBodyA().applyTorque(-torque);
+  }
   for (size_t i = 0; i < motors_.size(); ++i) {
     Motor& m = motors_[i];
     if (!m.enabled) continue;

@@ -60,6 +60,18 @@ class PhysicsRobot {
   /// Adds a torque about a hinge's axis (child turned positively, parent the other way),
   /// for the coming step.
   void applyJointEffort(size_t joint, double effort_nm);
+  /// The body (index into plan().bodies) that holds `link`.
+  size_t bodyOfLink(const std::string& link) const { return plan_.body_of_link.at(link); }
+  /// New mass and principal moments of a body, about its centre of mass and axes.
+  void setBodyMass(size_t body, double mass_kg, const Eigen::Vector3d& principal_inertia);
+  /// Gravity on a body on or off (off: it floats, whatever the world's gravity).
+  void setBodyGravity(size_t body, bool on);
+  /// Viscous damping of a hinge: a torque -damping * rate between its bodies every step.
+  void setJointDamping(size_t joint, double damping_nms_per_rad);
+  /// A hinge's limits; lower > upper frees it.
+  void setJointLimits(size_t joint, double lower_rad, double upper_rad);
+  /// One of Bullet's hinge parameters (BT_CONSTRAINT_ERP, _CFM, _STOP_ERP, _STOP_CFM).
+  void setJointParam(size_t joint, int param, double value);
   /// Wakes every body of the robot (a sleeping robot is not simulated).
   void wake();
   /// Sets every motor's velocity target for the coming physics step of dt_s.
@@ -104,6 +116,7 @@ class PhysicsRobot {
     double reference_rad = 0;  ///< angle the joint should be at
   };
   std::vector<Motor> motors_;
+  std::vector<double> damping_;  ///< per hinge, N m s / rad
 };
 
 }  // namespace bullet_sim

@@ -103,6 +103,14 @@ PhysicsWorld::~PhysicsWorld() {
   for (auto& obj : objects_) world_->removeCollisionObject(obj.get());
 }
 
+void PhysicsWorld::setSolver(const SolverSettings& settings) {
+  btContactSolverInfo& info = world_->getSolverInfo();
+  info.m_numIterations = settings.iterations;
+  info.m_sor = static_cast<btScalar>(settings.sor);
+  info.m_erp = static_cast<btScalar>(settings.erp);
+  info.m_globalCfm = static_cast<btScalar>(settings.cfm);
+}
+
 void PhysicsWorld::step(double dt_s) { world_->stepSimulation(dt_s, 0, dt_s); }
 
 }  // namespace bullet_sim

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "bullet_sim/description/world_spec.h"
+#include "bullet_sim/types.h"
 
 namespace bullet_sim {
 
@@ -57,6 +58,7 @@ class PhysicsWorld {
   btDiscreteDynamicsWorld* dynamics() { return world_.get(); }
   const btDiscreteDynamicsWorld& dynamics() const { return *world_; }
   void step(double dt_s);
+  void setSolver(const SolverSettings& settings);
 
  private:
   struct RobotPairFilter : btOverlapFilterCallback {

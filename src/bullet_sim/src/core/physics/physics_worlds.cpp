@@ -12,6 +12,7 @@ PhysicsWorlds::~PhysicsWorlds() = default;
 btDiscreteDynamicsWorld* PhysicsWorlds::addHome(int id) {
   Home& home = homes_[id];
   home.world = std::make_unique<PhysicsWorld>(statics_, gravity_);
+  home.world->setSolver(solver_);
   home.robot = nullptr;
   return home.world->dynamics();
 }
@@ -116,6 +117,11 @@ void PhysicsWorlds::castInParallel(size_t n,
 
 void PhysicsWorlds::runInParallel(size_t n, const std::function<void(size_t)>& work) {
   pool_.run(n, work, 1, &other_choice_);
+}
+
+void PhysicsWorlds::setSolver(const SolverSettings& settings) {
+  solver_ = settings;
+  for (auto& entry : homes_) entry.second.world->setSolver(settings);
 }
 
 void PhysicsWorlds::setGravity(const Eigen::Vector3d& gravity) {

@@ -60,6 +60,8 @@ class PhysicsWorlds {
   /// (camera frames), with a HelperChoice of its own.
   void runInParallel(size_t n, const std::function<void(size_t)>& work);
   void setGravity(const Eigen::Vector3d& gravity);
+  /// Every world's solver, now and for the homes added later.
+  void setSolver(const SolverSettings& settings);
   unsigned threads() const { return pool_.threads(); }
 
  private:
@@ -84,6 +86,7 @@ class PhysicsWorlds {
 
   StaticShapes statics_;
   Eigen::Vector3d gravity_;
+  SolverSettings solver_;
   std::map<int, Home> homes_;  ///< by robot id: the order of every pass over the robots
   RayScene rays_;
   StepPool pool_;

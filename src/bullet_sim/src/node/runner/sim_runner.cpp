@@ -25,13 +25,16 @@ constexpr double kRoundS = 0.005;
 }  // namespace
 
 SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
-                     const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz)
+                     const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz,
+                     bool state_topics)
     : sim_(sim),
       nh_(nh),
       cameras_(sim, queue_),
-      state_topics_(sim, queue_, gazebo_nh, model_states_rate_hz),
       paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  if (state_topics) {
+    state_topics_ = std::make_unique<StateTopics>(sim, queue_, gazebo_nh, model_states_rate_hz);
+  }
 }
 
 void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
@@ -115,7 +118,7 @@ unsigned SimRunner::step(unsigned max_steps) {
       scan_ios[i]->publishScan(scans_due[i].index, scans[i]);
     }
   }
-  state_topics_.update();
+  if (state_topics_) state_topics_->update();
   logSimulationWarnings();  // e.g. a command scaled to the wheels' limits
   return taken;
 }

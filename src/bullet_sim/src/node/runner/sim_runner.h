@@ -23,8 +23,11 @@ namespace bullet_sim_node {
 /// the messages it makes leave from the publishing thread of a PublishQueue, in order.
 class SimRunner {
  public:
+  /// Without `state_topics`, /gazebo/model_states and link_states are not advertised
+  /// (enable_ros_network false).
   SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
-            const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz);
+            const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz,
+            bool state_topics);
 
   /// Adds a robot to the simulation and advertises its topics under `robot_namespace`;
   /// its frames get the tf_prefix found from that namespace.
@@ -63,7 +66,7 @@ class SimRunner {
   ros::Publisher clock_pub_;
   std::map<std::string, std::unique_ptr<RobotIo>> robots_;
   CameraIo cameras_;
-  StateTopics state_topics_;
+  std::unique_ptr<StateTopics> state_topics_;  ///< null without the ROS network
   std::map<std::string, bullet_sim::Pose3> spawn_poses_;
   std::chrono::steady_clock::time_point last_clock_wall_;
   bool paused_;

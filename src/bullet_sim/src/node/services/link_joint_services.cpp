@@ -115,10 +115,10 @@ bool LinkJointServices::getLinkProperties(gazebo_msgs::GetLinkProperties::Reques
     res.status_message = "GetLinkProperties: " + unknownLink("link_name", req.link_name);
     return true;
   }
-  const bullet_sim::LinkInertia inertia =
-      bullet_sim::linkInertia(runner_.sim().robotSpec(link->model), link->link);
+  const bullet_sim::LinkProperties inertia =
+      runner_.sim().linkProperties(link->model, link->link);
   res.com = toMsg(inertia.com_in_link);
-  res.gravity_mode = true;
+  res.gravity_mode = inertia.gravity;
   res.mass = inertia.mass_kg;
   res.ixx = inertia.ixx;
   res.ixy = inertia.ixy;

@@ -74,13 +74,13 @@ std::string unknownFrame(const std::string& field, const std::string& name) {
 
 }  // namespace
 
-ModelServices::ModelServices(SimRunner& runner, const ros::NodeHandle& gazebo_nh)
+ModelServices::ModelServices(SimRunner& runner, const ros::NodeHandle& gazebo_nh,
+                             bool spawn_model_service)
     : runner_(runner) {
   ros::NodeHandle nh(gazebo_nh);
   servers_ = {
       nh.advertiseService("spawn_urdf_model", &ModelServices::spawn, this),
       nh.advertiseService("spawn_sdf_model", &ModelServices::spawn, this),
-      nh.advertiseService("spawn_model", &ModelServices::spawn, this),
       nh.advertiseService("delete_model", &ModelServices::remove, this),
       nh.advertiseService("get_model_state", &ModelServices::getState, this),
       nh.advertiseService("set_model_state", &ModelServices::setState, this),
@@ -88,6 +88,9 @@ ModelServices::ModelServices(SimRunner& runner, const ros::NodeHandle& gazebo_nh
       nh.advertiseService("get_model_properties", &ModelServices::getProperties, this),
       nh.advertiseService("set_model_configuration", &ModelServices::setConfiguration, this),
   };
+  if (spawn_model_service) {
+    servers_.push_back(nh.advertiseService("spawn_model", &ModelServices::spawn, this));
+  }
   set_state_sub_ = nh.subscribe("set_model_state", 10, &ModelServices::onSetState, this);
 }
 

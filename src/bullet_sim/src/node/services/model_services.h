@@ -25,7 +25,8 @@ namespace bullet_sim_node {
 /// value; reference frames are "" / "world", a model or "model::link".
 class ModelServices {
  public:
-  ModelServices(SimRunner& runner, const ros::NodeHandle& gazebo_nh);
+  /// With `spawn_model_service`, also spawn_model (ours: not in gazebo_ros's API).
+  ModelServices(SimRunner& runner, const ros::NodeHandle& gazebo_nh, bool spawn_model_service);
 
  private:
   bool spawn(gazebo_msgs::SpawnModel::Request& req, gazebo_msgs::SpawnModel::Response& res);

@@ -4,28 +4,32 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace bullet_sim_node {
 namespace {
 
-/// Bullet's solver settings (btContactSolverInfo defaults, which the simulation keeps) in
-/// the fields of ODE's: 10 iterations, SOR 1, ERP 0.2, no CFM, 4 contact points per
-/// pair, resting bodies sleep.
-gazebo_msgs::ODEPhysics solverSettings() {
+/// ODE's fields that Bullet has no counterpart for, as reported: resting bodies sleep,
+/// Bullet's contact manifold keeps 4 points, the rest has no equivalent (0).
+gazebo_msgs::ODEPhysics fixedOdeFields() {
   gazebo_msgs::ODEPhysics ode;
   ode.auto_disable_bodies = true;
-  ode.sor_pgs_iters = 10;
-  ode.sor_pgs_w = 1.0;
-  ode.erp = 0.2;
   ode.max_contacts = 4;
   return ode;
 }
 
-/// ode_config is accepted when it is what get_physics_properties reports or left unset
-/// (all zero): Bullet's solver cannot take ODE's settings.
-bool isAcceptedSolverConfig(const gazebo_msgs::ODEPhysics& ode) {
-  return ode == solverSettings() || ode == gazebo_msgs::ODEPhysics();
+/// The first of ODE's fields without a Bullet counterpart that `ode` changes, if any.
+std::optional<std::string> changedFixedField(const gazebo_msgs::ODEPhysics& ode) {
+  const gazebo_msgs::ODEPhysics fixed = fixedOdeFields();
+  if (ode.auto_disable_bodies != fixed.auto_disable_bodies) return "auto_disable_bodies";
+  if (ode.sor_pgs_precon_iters != fixed.sor_pgs_precon_iters) return "sor_pgs_precon_iters";
+  if (ode.sor_pgs_rms_error_tol != fixed.sor_pgs_rms_error_tol) return "sor_pgs_rms_error_tol";
+  if (ode.contact_surface_layer != fixed.contact_surface_layer) return "contact_surface_layer";
+  if (ode.contact_max_correcting_vel != fixed.contact_max_correcting_vel)
+    return "contact_max_correcting_vel";
+  if (ode.max_contacts != fixed.max_contacts) return "max_contacts";
+  return std::nullopt;
 }
 
 /// Why a set_physics_properties request cannot be honoured, if it cannot.
@@ -36,15 +40,18 @@ std::optional<std::string> invalidPhysics(const gazebo_msgs::SetPhysicsPropertie
     return "max_update_rate " + std::to_string(req.max_update_rate) +
            " is not >= 0 (0: as fast as possible)";
   if (auto bad = firstNonFinite(req.gravity, "gravity")) return *bad + " is not finite";
-  if (!isAcceptedSolverConfig(req.ode_config))
-    return std::string("ode_config differs from what get_physics_properties reports: ") +
-           "Bullet's solver settings cannot be changed (leave ode_config as reported or unset)";
+  if (req.ode_config == gazebo_msgs::ODEPhysics()) return std::nullopt;  // unset: kept
+  if (auto field = changedFixedField(req.ode_config)) {
+    return "ode_config." + *field + " has no equivalent in Bullet: leave it as " +
+           "get_physics_properties reports it";
+  }
   return std::nullopt;
 }
 
 }  // namespace
 
-PhysicsServices::PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::NodeHandle& gazebo_nh)
+PhysicsServices::PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::NodeHandle& gazebo_nh,
+                                 bool step_service)
     : runner_(runner), pacer_(pacer) {
   ros::NodeHandle nh(gazebo_nh);
   servers_ = {
@@ -52,10 +59,12 @@ PhysicsServices::PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::Nod
       nh.advertiseService("unpause_physics", &PhysicsServices::unpause, this),
       nh.advertiseService("reset_simulation", &PhysicsServices::resetSimulation, this),
       nh.advertiseService("reset_world", &PhysicsServices::resetWorld, this),
-      nh.advertiseService("step_simulation", &PhysicsServices::step, this),
       nh.advertiseService("get_physics_properties", &PhysicsServices::getPhysics, this),
       nh.advertiseService("set_physics_properties", &PhysicsServices::setPhysics, this),
   };
+  if (step_service) {
+    servers_.push_back(nh.advertiseService("step_simulation", &PhysicsServices::step, this));
+  }
 }
 
 bool PhysicsServices::pause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
@@ -107,7 +116,7 @@ bool PhysicsServices::getPhysics(gazebo_msgs::GetPhysicsProperties::Request&,
   res.gravity.x = g.x();
   res.gravity.y = g.y();
   res.gravity.z = g.z();
-  res.ode_config = solverSettings();
+  res.ode_config = odeConfig(sim.solverSettings());
   res.success = true;
   res.status_message = "GetPhysicsProperties: got properties";
   return true;
@@ -115,20 +124,54 @@ bool PhysicsServices::getPhysics(gazebo_msgs::GetPhysicsProperties::Request&,
 
 bool PhysicsServices::setPhysics(gazebo_msgs::SetPhysicsProperties::Request& req,
                                  gazebo_msgs::SetPhysicsProperties::Response& res) {
-  if (const std::optional<std::string> invalid = invalidPhysics(req)) {
-    res.success = false;
-    res.status_message = "SetPhysicsProperties: " + *invalid;
+  const std::string error = applyPhysics(req);
+  res.success = error.empty();
+  if (!res.success) {
+    res.status_message = "SetPhysicsProperties: " + error;
     return true;
   }
-  bullet_sim::Simulation& sim = runner_.sim();
-  sim.setPhysicsStep(req.time_step);
-  sim.setGravity(Eigen::Vector3d(req.gravity.x, req.gravity.y, req.gravity.z));
-  pacer_.setRealTimeFactor(req.max_update_rate * req.time_step, sim.timeS());
-  res.success = true;
   res.status_message = "SetPhysicsProperties: time step " + std::to_string(req.time_step) +
                        " s, real-time factor " +
                        std::to_string(req.max_update_rate * req.time_step);
+  if (on_change_) on_change_();
   return true;
+}
+
+std::string PhysicsServices::applyPhysics(const gazebo_msgs::SetPhysicsProperties::Request& req) {
+  if (const std::optional<std::string> invalid = invalidPhysics(req)) return *invalid;
+  bullet_sim::Simulation& sim = runner_.sim();
+  if (req.ode_config != gazebo_msgs::ODEPhysics()) {
+    bullet_sim::SolverSettings solver;
+    solver.iterations = static_cast<int>(req.ode_config.sor_pgs_iters);
+    solver.sor = req.ode_config.sor_pgs_w;
+    solver.erp = req.ode_config.erp;
+    solver.cfm = req.ode_config.cfm;
+    try {
+      sim.setSolverSettings(solver);
+    } catch (const std::invalid_argument& error) {
+      return std::string("ode_config: ") + error.what();
+    }
+  }
+  sim.setPhysicsStep(req.time_step);
+  sim.setGravity(Eigen::Vector3d(req.gravity.x, req.gravity.y, req.gravity.z));
+  pacer_.setRealTimeFactor(req.max_update_rate * req.time_step, sim.timeS());
+  return "";
+}
+
+gazebo_msgs::GetPhysicsProperties::Response PhysicsServices::currentPhysics() {
+  gazebo_msgs::GetPhysicsProperties::Request req;
+  gazebo_msgs::GetPhysicsProperties::Response res;
+  getPhysics(req, res);
+  return res;
+}
+
+gazebo_msgs::ODEPhysics odeConfig(const bullet_sim::SolverSettings& solver) {
+  gazebo_msgs::ODEPhysics ode = fixedOdeFields();
+  ode.sor_pgs_iters = static_cast<uint32_t>(solver.iterations);
+  ode.sor_pgs_w = solver.sor;
+  ode.erp = solver.erp;
+  ode.cfm = solver.cfm;
+  return ode;
 }
 
 }  // namespace bullet_sim_node

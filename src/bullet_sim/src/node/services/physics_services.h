@@ -10,6 +10,8 @@
 #include <ros/node_handle.h>
 #include <std_srvs/Empty.h>
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace bullet_sim_node {
@@ -19,7 +21,17 @@ namespace bullet_sim_node {
 /// The real-time factor is Gazebo's max_update_rate * time_step (0: as fast as possible).
 class PhysicsServices {
  public:
-  PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::NodeHandle& gazebo_nh);
+  /// With `step_service`, also step_simulation (ours: not in gazebo_ros's API).
+  PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::NodeHandle& gazebo_nh,
+                  bool step_service);
+
+  /// What get_physics_properties answers now.
+  gazebo_msgs::GetPhysicsProperties::Response currentPhysics();
+  /// Applies what set_physics_properties asks; "" or why it cannot be (nothing changed).
+  /// Does not call the change callback.
+  std::string applyPhysics(const gazebo_msgs::SetPhysicsProperties::Request& req);
+  /// Called after set_physics_properties has changed the physics.
+  void onChange(std::function<void()> callback) { on_change_ = std::move(callback); }
 
  private:
   bool pause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
@@ -35,6 +47,11 @@ class PhysicsServices {
   SimRunner& runner_;
   Pacer& pacer_;
   std::vector<ros::ServiceServer> servers_;
+  std::function<void()> on_change_;
 };
+
+/// Bullet's solver settings in ODE's fields, with the fields Bullet has no counterpart
+/// for as they are reported (auto_disable_bodies true, max_contacts 4, the others 0).
+gazebo_msgs::ODEPhysics odeConfig(const bullet_sim::SolverSettings& solver);
 
 }  // namespace bullet_sim_node
