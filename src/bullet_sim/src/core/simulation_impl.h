@@ -38,6 +38,7 @@ struct Simulation::Impl {
     std::vector<std::mt19937_64> ray_rngs, imu_rngs;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;
+    std::vector<unsigned> camera_triggers;  ///< frames asked of each triggered camera
   };
 
   Impl(const WorldSpec& w, const SimConfig& c)

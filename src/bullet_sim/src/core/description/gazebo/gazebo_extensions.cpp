@@ -40,7 +40,10 @@ const SensorFamily* sensorFamily(const std::string& type) {
       {"ray", lasers, readRaySensor},
       {"gpu_ray", lasers, readRaySensor},
       {"imu", {"libgazebo_ros_imu_sensor.so"}, readImuSensor},
-      {"camera", {"libgazebo_ros_camera.so"}, readCameraSensor},
+      {"camera", {"libgazebo_ros_camera.so", kTriggeredCameraPlugin}, readCameraSensor},
+      {"multicamera",
+       {"libgazebo_ros_multicamera.so", kTriggeredMultiCameraPlugin},
+       readMultiCameraSensor},
       {"wideanglecamera", {"libgazebo_ros_camera.so"}, readWideAngleCameraSensor},
       {"depth", {kKinectPlugin, kDepthCameraPlugin}, readDepthCameraSensor}};
   for (const SensorFamily& f : families) {
