@@ -92,6 +92,13 @@ class Simulation {
   /// While an external wrench or effort is set it takes one step. With `taken`, says how
   /// many steps it took.
   std::vector<DueSensor> stepToNextReading(unsigned max_steps, unsigned* taken = nullptr);
+  /// Asks triggered camera `index` of `robot` (CameraSpec::trigger_topic) for one frame:
+  /// it is due with the next step, one frame per call (calls made between two steps are
+  /// served one per step), as Gazebo's triggered camera renders once per trigger.
+  /// @throws std::out_of_range for an unknown robot or a camera that is not triggered.
+  void triggerCamera(const std::string& robot, size_t index);
+  /// SimConfig::seed: sensor noise (cameras' too) is seeded from it, the robot and sensor.
+  uint64_t seed() const;
   double timeS() const;
   /// The threads that step the physics (SimConfig::threads, 0 resolved).
   unsigned threads() const;

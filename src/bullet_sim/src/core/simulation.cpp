@@ -165,6 +165,10 @@ void Simulation::Impl::afterStep(Robot& r) {
 }
 
 unsigned Simulation::Impl::stepsToReading(uint64_t first, unsigned max_steps) const {
+  for (const auto& entry : robots) {
+    for (unsigned pending : entry.second->camera_triggers)
+      if (pending > 0) return 1;
+  }
   for (unsigned n = 1; n < max_steps; ++n) {
     for (const auto& entry : robots) {
       if (entry.second->schedule.anyDue(first + n - 1, cfg.physics_step_s)) return n;
@@ -193,9 +197,27 @@ std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps, unsigne
   std::vector<DueSensor> due;
   for (auto& entry : impl.robots) {
     entry.second->schedule.collectDue(impl.steps, impl.cfg.physics_step_s, &due);
+    std::vector<unsigned>& triggers = entry.second->camera_triggers;
+    for (size_t i = 0; i < triggers.size(); ++i) {
+      if (triggers[i] == 0) continue;
+      --triggers[i];
+      due.push_back({entry.first, SensorKind::Camera, i});
+    }
   }
   return due;
 }
+
+void Simulation::triggerCamera(const std::string& robot, size_t index) {
+  Impl::Robot& r = impl_->robot(robot);
+  if (index >= r.spec.cameras.size() || r.spec.cameras[index].trigger_topic.empty()) {
+    throw std::out_of_range("robot '" + robot + "' has no triggered camera " +
+                            std::to_string(index));
+  }
+  r.camera_triggers.resize(r.spec.cameras.size(), 0);
+  ++r.camera_triggers[index];
+}
+
+uint64_t Simulation::seed() const { return impl_->cfg.seed; }
 
 double Simulation::timeS() const { return impl_->timeAtStep(impl_->steps); }
 
@@ -261,6 +283,7 @@ Twist3 Simulation::modelTwist(const std::string& robot) const {
 ModelCondition Simulation::condition(const std::string& robot) const {
   const Impl::Robot& r = impl_->robot(robot);
   ModelCondition c;
+  if (r.spec.is_static) return c;  // a static model stands as it was put, tilted or not
   const Eigen::Vector3d up =
       r.physics->linkPose(r.physics->plan().bodies[0].root_link).linear().col(2);
   c.tilt_rad = std::acos(std::clamp(up.z(), -1.0, 1.0));

@@ -41,6 +41,7 @@ struct Simulation::Impl {
     /// set_link_properties / set_joint_properties changes, put back after a reset().
     std::map<std::string, LinkProperties> link_changes;
     std::map<std::string, JointDynamics> joint_changes;
+    std::vector<unsigned> camera_triggers;  ///< frames asked of each triggered camera
   };
 
   Impl(const WorldSpec& w, const SimConfig& c)

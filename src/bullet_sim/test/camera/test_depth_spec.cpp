@@ -135,7 +135,8 @@ TEST(DepthSpec, EveryBadValueIsALoadErrorNamingSensorElementAndValue) {
       {"<height>120<", "<height>12.5<",
        cw + " <image> <height>: '12.5' is not a pixel count in 1..16384"},
       {"<format>R8G8B8<", "<format>RGBA_INT8<",
-       cw + " <image> <format>: 'RGBA_INT8' is not R8G8B8, B8G8R8 or L8"},
+       cw + " <image> <format>: 'RGBA_INT8' is not R8G8B8, B8G8R8, L8, R16G16B16 or L16 (or "
+           "RGB_INT8, BGR_INT8, L_INT8, RGB_INT16, L_INT16)"},
       {"<near>0.05<", "<near>0<", cw + " <clip> <near>: '0' must be > 0"},
       {"<far>8.0<", "<far>0.01<", cw + " <clip> <far>: '0.01' must be finite and above <near>"},
       {"<updateRate>10<", "<updateRate>fast<",

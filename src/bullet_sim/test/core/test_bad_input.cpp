@@ -209,7 +209,9 @@ TEST(BadUrdf, CameraWithZeroFieldOfView) {
 TEST(BadUrdf, CameraWithUnknownImageFormat) {
   const RobotError e("urdf_camera_unknown_format.urdf");
   EXPECT_EQ(e.text, e.path + ": <gazebo reference=\"base_link\"> <sensor name=\"front_camera\"> "
-                             "<camera> <image> <format>: 'YUV422' is not R8G8B8, B8G8R8 or L8");
+                             "<camera> <image> <format>: 'YUV422' is not R8G8B8, B8G8R8, L8, "
+                             "R16G16B16 or L16 (or RGB_INT8, BGR_INT8, L_INT8, RGB_INT16, "
+                             "L_INT16)");
 }
 
 // ------------------------------------------------------------ files it names ----

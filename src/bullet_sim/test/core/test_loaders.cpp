@@ -139,7 +139,7 @@ TEST(RobotLoader, CameraThatCannotBeRenderedIsALoadError) {
   ASSERT_NE(bad_format.find(format), std::string::npos);
   bad_format.replace(bad_format.find(format), format.size(), "<format>YUV422</format>");
   EXPECT_NE(loadErrorOf([&] { parseRobot(bad_format, "robot_description"); })
-                .find("<image> <format>: 'YUV422' is not R8G8B8, B8G8R8 or L8"),
+                .find("<image> <format>: 'YUV422' is not R8G8B8, B8G8R8, L8, R16G16B16 or L16"),
             std::string::npos);
 }
 

@@ -1,6 +1,7 @@
 #ifndef BULLET_SIM_ROBOT_SPEC_H
 #define BULLET_SIM_ROBOT_SPEC_H
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -70,7 +71,20 @@ struct LensSpec {
   int env_texture_size = 256;  ///< pixels along each side of a cube-map face
 };
 
-/// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin, or a
+/// A camera's <noise> of type gaussian: per pixel and frame one sample of N(mean, stddev),
+/// added to each colour channel in [0, 1] (Gazebo's image noise).
+struct ImageNoiseSpec {
+  double mean = 0, stddev = 0;
+};
+
+/// A camera's <distortion>: Brown's model (radial k1 k2 k3, tangential p1 p2) about
+/// <center>, in units of the image size (0.5 0.5 is the principal point).
+struct DistortionSpec {
+  double k1 = 0, k2 = 0, k3 = 0, p1 = 0, p2 = 0, center_x = 0.5, center_y = 0.5;
+};
+
+/// A <sensor type="camera"> and its libgazebo_ros_camera.so plugin (or
+/// libgazebo_ros_triggered_camera.so), one <camera> of a <sensor type="multicamera">, or a
 /// <sensor type="depth">, whose colour image and camera_info are those of a camera (under
 /// Gazebo's depth plugins' defaults ir/image_raw and ir/camera_info) and `depth` the rest.
 struct CameraSpec {
@@ -82,6 +96,15 @@ struct CameraSpec {
   std::string format = "R8G8B8";
   std::optional<DepthSpec> depth;  ///< set for a depth camera
   std::optional<LensSpec> lens;    ///< set for a wide-angle camera (hfov up to 2 pi)
+  std::optional<ImageNoiseSpec> noise;      ///< <noise type="gaussian">
+  std::optional<DistortionSpec> distortion;  ///< <distortion>, applied to the image
+  /// camera_info's D (k1 k2 t1 t2 k3): the plugin's <distortionK1>.. or, with
+  /// <autoDistortion>, the <distortion>'s coefficients
+  std::array<double, 5> info_distortion{};
+  double hack_baseline_m = 0;  ///< <hackBaseline>: camera_info P[3] = -fx * baseline
+  /// A triggered camera's trigger topic (<triggerTopicName>, under the camera name): it
+  /// renders one frame per message received, and nothing else. Empty for other cameras.
+  std::string trigger_topic;
 };
 
 /// Where the diff drive's odometry comes from (<odometrySource>).
@@ -125,6 +148,10 @@ struct RobotSpec {
   /// SDF model the pose of its root link (the canonical link) in the <model> frame. Spawn
   /// and model poses are poses of the model frame, as in Gazebo.
   Pose3 root_link_in_model;
+  /// A <static> SDF model (or one anchored to the world) with sensors or plugins: every link
+  /// is fixed to the root link, and the robot stays where it is put (its bodies are
+  /// static, as Gazebo's static models are; set_model_state still moves it).
+  bool is_static = false;
   /// Unsupported plugins/sensors, links with collision but no inertial, ...
   std::vector<std::string> warnings;
 };
@@ -158,7 +185,8 @@ RobotSpec parseRobotFile(const std::string& path);
 /// visual geometry (material scripts give Gazebo's colours), its revolute, continuous,
 /// prismatic and fixed joints, nested models with `::`-scoped link names; the tree is
 /// rooted at the canonical link. <include>s are resolved through `resolver`.
-/// Sensors and plugins of the model are not simulated (a warning each).
+/// Its links' <sensor>s and its <plugin>s are read as a URDF's <gazebo> blocks are (the
+/// same readers; unsupported ones a warning each). A <static> model gives a static spec.
 /// @throws LoadError naming the source, element and value.
 RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name,
                               const UriResolver& resolver);

@@ -21,24 +21,25 @@ struct ImageData {
   double time_s = 0;
   std::string frame_id;
   int width = 0, height = 0;
-  std::string encoding;  ///< "rgb8", "bgr8" or "mono8"
+  std::string encoding;  ///< "rgb8", "bgr8", "mono8", "rgb16" or "mono16"
   int step = 0;          ///< bytes per row
   std::vector<uint8_t> data;
 };
 
-/// Intrinsics of a camera, laid out as sensor_msgs/CameraInfo (no distortion).
+/// Intrinsics of a camera, laid out as sensor_msgs/CameraInfo.
 struct CameraInfoData {
   double time_s = 0;
   std::string frame_id;
   int width = 0, height = 0;
   std::string distortion_model = "plumb_bob";
-  std::array<double, 5> D{};                      ///< all zero
+  std::array<double, 5> D{};                      ///< k1 k2 t1 t2 k3
   std::array<double, 9> K{};                      ///< row-major
   std::array<double, 9> R{1, 0, 0, 0, 1, 0, 0, 0, 1};
   std::array<double, 12> P{};                     ///< [K | 0], row-major
 };
 
-/// The ROS encoding of a Gazebo image format (R8G8B8 -> rgb8, B8G8R8 -> bgr8, L8 -> mono8).
+/// The ROS encoding of a Gazebo image format (R8G8B8 -> rgb8, B8G8R8 -> bgr8, L8 -> mono8,
+/// R16G16B16 -> rgb16, L16 -> mono16).
 /// @throws LoadError naming the camera and the format when it is not one of those.
 std::string imageEncoding(const CameraSpec& camera);
 
@@ -50,7 +51,8 @@ void validateCamera(const CameraSpec& camera);
 /// cy = height / 2, stamped `time_s`, frame_id the plugin's frameName. For a wide-angle
 /// camera fx = fy is the focal length of the pinhole that matches the lens near its axis,
 /// (width / 2) * c1 * f * fun'(c3) / c2 (Gazebo's plugin would publish the pinhole formula
-/// above, which is negative beyond hfov = pi).
+/// above, which is negative beyond hfov = pi). D is CameraSpec::info_distortion, P[3] =
+/// -fx * hackBaseline.
 CameraInfoData cameraInfo(const CameraSpec& camera, double time_s);
 
 /// One frame of CameraRenderer::renderTogether: which camera, where its image goes and, when

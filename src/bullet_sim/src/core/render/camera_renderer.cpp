@@ -14,9 +14,11 @@
 #include "bullet_sim/render/depth_camera.h"
 #include "description/gazebo/camera_lens.h"
 #include "description/robot_plan.h"
+#include "render/camera_effects.h"
 #include "render/lens_camera.h"
 #include "render/scene_lights.h"
 #include "render/shape_sources.h"
+#include "sensors/sensor_schedule.h"
 
 namespace bullet_sim {
 namespace {
@@ -138,8 +140,10 @@ std::string imageEncoding(const CameraSpec& camera) {
   if (camera.format == "R8G8B8") return "rgb8";
   if (camera.format == "B8G8R8") return "bgr8";
   if (camera.format == "L8") return "mono8";
+  if (camera.format == "R16G16B16") return "rgb16";
+  if (camera.format == "L16") return "mono16";
   throw LoadError(cameraName(camera) + ": <image><format> '" + camera.format +
-                  "' is not supported (R8G8B8, B8G8R8 or L8)");
+                  "' is not supported (R8G8B8, B8G8R8, L8, R16G16B16 or L16)");
 }
 
 void validateCamera(const CameraSpec& camera) {
@@ -166,6 +170,8 @@ CameraInfoData cameraInfo(const CameraSpec& camera, double time_s) {
         camera.width);
     info.K[0] = info.K[4] = info.P[0] = info.P[5] = f_px;
   }
+  info.D = camera.info_distortion;
+  info.P[3] = -info.P[0] * camera.hack_baseline_m;
   return info;
 }
 
@@ -183,6 +189,9 @@ struct CameraRenderer::Impl {
     std::unique_ptr<LensCamera> lens_camera;         ///< instead, for a wide-angle camera
     size_t link_hint = 0;
     std::vector<uint8_t> rgb;  ///< frame before conversion to bgr8 / mono8
+    std::vector<uint8_t> distorted;  ///< rgb through the distortion, when it has one
+    DistortionMap distortion;        ///< made with the renderer, when it has one
+    std::mt19937_64 rng;             ///< its image noise, seeded from (seed, robot, camera)
   };
   struct RobotScene {
     int spawn_generation = -1;  ///< tells a respawned robot of the same name apart
@@ -270,9 +279,16 @@ struct CameraRenderer::Impl {
   }
 
   /// Makes `camera`'s renderer (or lens camera) the first time it is drawn.
-  static void prepareCamera(const CameraSpec& camera, Camera* drawer) {
+  void prepareCamera(const std::string& robot, const CameraSpec& camera, Camera* drawer) const {
     if (drawer->renderer || drawer->lens_camera) return;
     validateCamera(camera);
+    drawer->rng = sensorRng(sim.seed(), robot, camera.name);
+    if (camera.distortion) {
+      const CameraInfoData info = cameraInfo(camera, 0);
+      const std::array<double, 2> c = distortionCentre(camera, info.K[2], info.K[5]);
+      drawer->distortion = DistortionMap(*camera.distortion, camera.width, camera.height,
+                                         info.K[0], c[0], c[1]);
+    }
     if (camera.lens) {
       drawer->lens_camera = std::make_unique<LensCamera>(camera);
     } else {
@@ -295,7 +311,7 @@ struct CameraRenderer::Impl {
                                                frame->index, frame->depth != nullptr);
     RobotScene& robot = robots.at(frame->robot);
     Camera& drawer = robot.cameras.at(frame->index);
-    prepareCamera(camera, &drawer);
+    prepareCamera(frame->robot, camera, &drawer);
     const Eigen::Isometry3d T_world_camera =
         cameraPose(frame->robot, robot, camera, &drawer.link_hint);
     setImageHeader(camera, sim.timeS(), frame->image);
@@ -306,7 +322,7 @@ struct CameraRenderer::Impl {
   /// buffers, so that frames of different cameras are drawn side by side.
   static void draw(const sim_render::Scene& scene, const Draw& d) {
     ImageData* image = d.frame->image;
-    const bool rgb8 = image->encoding == "rgb8";
+    const bool rgb8 = image->encoding == "rgb8" && !d.camera->noise && !d.camera->distortion;
     std::vector<uint8_t>& rgb = rgb8 ? image->data : d.drawer->rgb;
     if (d.drawer->lens_camera) {
       d.drawer->lens_camera->render(scene, d.T_world_camera, rgb);
@@ -316,8 +332,18 @@ struct CameraRenderer::Impl {
     if (d.frame->depth) readDepth(*d.drawer->renderer, *d.camera, image->time_s, d.frame->depth);
     if (rgb8) {
       image->step = 3 * d.camera->width;
-    } else {
+    } else if (!d.camera->noise && !d.camera->distortion && image->encoding != "rgb16" &&
+               image->encoding != "mono16") {
       encodeFromRgb(d.drawer->rgb, d.camera->width, image);
+    } else {
+      const std::vector<uint8_t>* frame = &d.drawer->rgb;
+      if (!d.drawer->distortion.empty()) {
+        d.drawer->distortion.apply(d.drawer->rgb, &d.drawer->distorted);
+        frame = &d.drawer->distorted;
+      }
+      image->step = encodeFrame(*frame, d.camera->width, image->encoding,
+                                d.camera->noise ? &*d.camera->noise : nullptr, &d.drawer->rng,
+                                &image->data);
     }
   }
 

@@ -43,6 +43,8 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
     entries_.push_back({SensorKind::Imu, i, spec.imus[i].update_rate_hz});
   }
   for (size_t i = 0; i < spec.cameras.size(); ++i) {
+    // A triggered camera is due when triggered only (Simulation::triggerCamera).
+    if (!spec.cameras[i].trigger_topic.empty()) continue;
     entries_.push_back({SensorKind::Camera, i, spec.cameras[i].update_rate_hz});
   }
   if (spec.diff_drive) {

@@ -35,6 +35,10 @@ SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
   if (state_topics) {
     state_topics_ = std::make_unique<StateTopics>(sim, queue_, gazebo_nh, model_states_rate_hz);
   }
+  // The world's models (its movable ones, and static ones with sensors) are simulated from
+  // the start: their cameras publish in the node's namespace, as a world's plugins do.
+  const std::string tf_prefix = findTfPrefix(nh_);
+  for (const std::string& name : sim_.robotNames()) cameras_.addRobot(name, nh_, tf_prefix);
 }
 
 void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,

@@ -7,11 +7,13 @@
 #include <ros/console.h>
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
+#include <std_msgs/Empty.h>
 
 #include <boost/make_shared.hpp>
 
 #include <algorithm>
 #include <exception>
+#include <stdexcept>
 
 namespace bullet_sim_node {
 namespace {
@@ -20,6 +22,8 @@ namespace {
 // short stall of a subscriber; one that falls further behind loses frames, not memory.
 constexpr uint32_t kImageQueueSize = 5;
 constexpr uint32_t kInfoQueueSize = 50;
+// Triggers kept until the simulation loop reads them: a burst of them is not lost.
+constexpr uint32_t kTriggerQueueSize = 10;
 
 sensor_msgs::ImagePtr toMsg(bullet_sim::ImageData* image) {
   auto msg = boost::make_shared<sensor_msgs::Image>();
@@ -55,7 +59,7 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
   return msg;
 }
 
-CameraIo::CameraIo(const bullet_sim::Simulation& sim, PublishQueue& queue)
+CameraIo::CameraIo(bullet_sim::Simulation& sim, PublishQueue& queue)
     : sim_(sim), queue_(queue), renderer_(sim), depth_(queue) {
   logNewRendererWarnings();
 }
@@ -78,8 +82,17 @@ void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_n
         nh, cameraTopic(camera.camera_name, camera.image_topic), kImageQueueSize);
     topics.back().info = CountedPublisher::advertise<sensor_msgs::CameraInfo>(
         nh, cameraTopic(camera.camera_name, camera.info_topic), kInfoQueueSize);
-    if (camera.depth) {
-      depth_.addCamera(robot, topics.size() - 1, camera, nh, topics.back().frame_id);
+    const size_t index = topics.size() - 1;
+    if (camera.depth) depth_.addCamera(robot, index, camera, nh, topics.back().frame_id);
+    if (!camera.trigger_topic.empty()) {
+      topics.back().trigger = nh.subscribe<std_msgs::Empty>(
+          cameraTopic(camera.camera_name, camera.trigger_topic), kTriggerQueueSize,
+          [this, robot, index](const std_msgs::Empty::ConstPtr&) {
+            try {
+              sim_.triggerCamera(robot, index);
+            } catch (const std::out_of_range&) {  // the robot was deleted meanwhile
+            }
+          });
     }
   }
 }

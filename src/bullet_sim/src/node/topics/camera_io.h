@@ -10,6 +10,7 @@
 
 #include <ros/node_handle.h>
 #include <ros/publisher.h>
+#include <ros/subscriber.h>
 #include <sensor_msgs/CameraInfo.h>
 
 #include <exception>
@@ -36,13 +37,15 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
 class CameraIo {
  public:
   /// `sim` and `queue` (which the messages leave through) must outlive this object.
-  CameraIo(const bullet_sim::Simulation& sim, PublishQueue& queue);
+  /// A triggered camera's trigger topic asks `sim` for its frames (Simulation::triggerCamera).
+  CameraIo(bullet_sim::Simulation& sim, PublishQueue& queue);
   CameraIo(const CameraIo&) = delete;
   CameraIo& operator=(const CameraIo&) = delete;
 
   /// Advertises the topics of a spawned robot's cameras, resolved in `robot_nh`; their
   /// frame ids go under `tf_prefix`. A camera the renderer cannot draw (bad size, fov or
-  /// format) is reported and left out.
+  /// format) is reported and left out. A triggered camera subscribes to
+  /// `<cameraName>/<triggerTopicName>` (std_msgs/Empty): one frame per message.
   void addRobot(const std::string& robot, const ros::NodeHandle& robot_nh,
                 const std::string& tf_prefix);
   void removeRobot(const std::string& robot);
@@ -56,6 +59,7 @@ class CameraIo {
  private:
   struct Topics {
     CountedPublisher image, info;
+    ros::Subscriber trigger;  ///< a triggered camera's trigger topic
     std::string frame_id;
   };
   /// A due camera that someone watches, and its frame once rendered.
@@ -77,7 +81,7 @@ class CameraIo {
 
   void logNewRendererWarnings();
 
-  const bullet_sim::Simulation& sim_;
+  bullet_sim::Simulation& sim_;
   PublishQueue& queue_;
   bullet_sim::CameraRenderer renderer_;
   DepthCameraIo depth_;  ///< the depth topics of the depth cameras among them
