@@ -16,6 +16,7 @@ tests=(
   "turtlebot_urdf test/model_rviz.test"
   "turtlebot3_description test/display_rviz.test"
   "xqrobot_description test/display_rviz.test"
+  "xqrobot_description test/xqrobot_roundTrack_rviz.test"
   "turtlebot3_gazebo test/roundTrack_rviz.test"
   "turtlebot3_gazebo test/roundTrack_rviz_tf.test"
   "turtlebot3_gazebo test/roundTrack_rviz_panel.test"

@@ -137,6 +137,14 @@ class Simulation {
   ImuData readImu(const std::string& robot, size_t index);
   OdometryData readOdometry(const std::string& robot);
   JointStateData readJointStates(const std::string& robot) const;  ///< every non-fixed joint
+  /// libgazebo_ros_p3d.so plugin `index` (RobotSpec::p3ds): the ground truth of its body,
+  /// its noise drawn from its own seeded generator. Its twist is in the world's axes (or
+  /// the frame link's, as Gazebo turns it), not the child's.
+  OdometryData readGroundTruth(const std::string& robot, size_t index);
+  /// libgazebo_ros_force.so plugin `index` (RobotSpec::forces): the wrench (world axes, at
+  /// the body's centre of mass) that acts at every step from now on, as its topic's last
+  /// message does in Gazebo. A world reset sets it back to zero.
+  void setPluginWrench(const std::string& robot, size_t index, const Wrench& wrench);
   std::vector<LinkPose> linkPoses(const std::string& robot) const;
   const WorldSpec& world() const;
 

@@ -27,10 +27,10 @@ void requireLink(const PhysicsRobot& robot, const std::string& robot_name, const
 }
 
 size_t requireHinge(const PhysicsRobot& robot, const std::string& robot_name,
-                    const std::string& tag, const std::string& joint) {
+                    const std::string& plugin, const std::string& tag, const std::string& joint) {
   const int index = robot.jointIndex(joint);
   if (index < 0) {
-    throw LoadError("robot '" + robot_name + "': libgazebo_ros_diff_drive.so <" + tag +
+    throw LoadError("robot '" + robot_name + "': " + plugin + " <" + tag +
                     "> names joint '" + joint +
                     "' that does not exist (or is not revolute/continuous)");
   }
@@ -43,6 +43,26 @@ double wheelSpeedLimit(const RobotSpec& spec, const std::string& joint) {
   const urdf::JointConstSharedPtr j = spec.urdf->getJoint(joint);
   if (j && j->limits && j->limits->velocity > 0) return j->limits->velocity;
   return std::numeric_limits<double>::infinity();
+}
+
+/// One side's wheel joints of a drive (a skid steer's front and rear; a joint named twice
+/// is driven once) and the lowest velocity limit among them.
+struct DriveSide {
+  std::vector<size_t> joints;
+  double max_radps = std::numeric_limits<double>::infinity();
+};
+
+DriveSide driveSide(const PhysicsRobot& robot, const RobotSpec& spec, const std::string& name,
+                    const std::vector<std::pair<const char*, std::string>>& tagged_joints) {
+  DriveSide side;
+  for (const auto& tagged : tagged_joints) {
+    const size_t joint = requireHinge(robot, name, spec.diff_drive->plugin, tagged.first,
+                                      tagged.second);
+    if (std::find(side.joints.begin(), side.joints.end(), joint) != side.joints.end()) continue;
+    side.joints.push_back(joint);
+    side.max_radps = std::min(side.max_radps, wheelSpeedLimit(spec, tagged.second));
+  }
+  return side;
 }
 
 }  // namespace
@@ -77,13 +97,22 @@ void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
   for (const CameraSpec& s : spec.cameras) {
     requireLink(*r->physics, name, "camera '" + s.name + "'", s.link);
   }
+  equipModelPlugins(name, r);
   double joint_state_rate_hz = kDefaultJointStateRateHz;
   if (spec.diff_drive) {
     const DiffDriveSpec& d = *spec.diff_drive;
-    const size_t left = requireHinge(*r->physics, name, "leftJoint", d.left_joint);
-    const size_t right = requireHinge(*r->physics, name, "rightJoint", d.right_joint);
-    r->drive.emplace(d, left, right, wheelSpeedLimit(spec, d.left_joint),
-                     wheelSpeedLimit(spec, d.right_joint));
+    const bool skid = !d.left_rear_joint.empty();
+    std::vector<std::pair<const char*, std::string>> left = {
+        {skid ? "leftFrontJoint" : "leftJoint", d.left_joint}};
+    std::vector<std::pair<const char*, std::string>> right = {
+        {skid ? "rightFrontJoint" : "rightJoint", d.right_joint}};
+    if (skid) {
+      left.emplace_back("leftRearJoint", d.left_rear_joint);
+      right.emplace_back("rightRearJoint", d.right_rear_joint);
+    }
+    DriveSide l = driveSide(*r->physics, spec, name, left);
+    DriveSide rt = driveSide(*r->physics, spec, name, right);
+    r->drive.emplace(d, std::move(l.joints), std::move(rt.joints), l.max_radps, rt.max_radps);
     joint_state_rate_hz = d.update_rate_hz;
   }
   r->imus.resize(spec.imus.size());
@@ -157,6 +186,11 @@ void Simulation::Impl::beforeStep(Robot& r, uint64_t k) {
     r.drive->updateMotors(r.physics.get(), timeAtStep(k - 1), dt);
   }
   r.physics->applyMotors(dt);
+  for (size_t i = 0; i < r.plugin_wrenches.size(); ++i) {
+    const Wrench& w = r.plugin_wrenches[i];
+    if (w.force_n.isZero() && w.torque_nm.isZero()) continue;
+    r.physics->applyLinkWrench(r.spec.forces[i].body, w);
+  }
 }
 
 void Simulation::Impl::afterStep(Robot& r) {
@@ -238,6 +272,7 @@ void Simulation::reset() {
     impl_->applyPropertyChanges(r);
     impl_->physics->attach(r.id, r.physics.get());
     if (r.drive) r.drive->reset();
+    for (Wrench& w : r.plugin_wrenches) w = Wrench();
     r.schedule.restart();
     impl_->seedSensors(entry.second.first, &r);
   }
@@ -379,6 +414,12 @@ OdometryData Simulation::readOdometry(const std::string& robot) {
     odom.pose.orientation = Eigen::AngleAxisd(p.z(), Eigen::Vector3d::UnitZ());
     odom.twist_in_child.linear = Eigen::Vector3d(r.drive->encoderLinearMps(), 0, 0);
     odom.twist_in_child.angular = Eigen::Vector3d(0, 0, r.drive->encoderAngularRadps());
+  }
+  if (d.odometry_covariance_xy_yaw) {
+    // x, y, yaw as given; z, roll and pitch unknown (1e12), as the skid steer plugin sets.
+    const Eigen::Vector3d& c = *d.odometry_covariance_xy_yaw;
+    const double diagonal[6] = {c.x(), c.y(), 1e12, 1e12, 1e12, c.z()};
+    for (int i = 0; i < 6; ++i) odom.pose_covariance[i * 7] = odom.twist_covariance[i * 7] = diagonal[i];
   }
   return odom;
 }

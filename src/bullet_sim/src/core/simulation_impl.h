@@ -35,7 +35,10 @@ struct Simulation::Impl {
     double last_command_s = 0;   ///< sim time of the last setCmdVel
     bool command_active = false; ///< a non-zero command the timeout may stop
     bool told_wheel_limit = false;  ///< a command was scaled to the wheel limits and we said so
-    std::vector<std::mt19937_64> ray_rngs, imu_rngs;
+    std::vector<std::mt19937_64> ray_rngs, imu_rngs, p3d_rngs;
+    /// The last wrench of each libgazebo_ros_force.so plugin (RobotSpec::forces), applied
+    /// at every step.
+    std::vector<Wrench> plugin_wrenches;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;
     /// set_link_properties / set_joint_properties changes, put back after a reset().
@@ -54,6 +57,9 @@ struct Simulation::Impl {
   /// and sets up its drive, sensors and their schedule.
   /// @throws LoadError naming what is missing.
   void equipRobot(const std::string& name, Robot* r);
+  /// The part of equipRobot for the model plugins of gazebo_plugins (p3d, force): checks
+  /// the links they name and sets up their state. @throws LoadError naming what is missing.
+  void equipModelPlugins(const std::string& name, Robot* r);
 
   /// Builds robot r's bodies in a home world of its own; physics->attach() them once the
   /// robot is complete.
@@ -74,7 +80,11 @@ struct Simulation::Impl {
   void seedSensors(const std::string& name, Robot* r) const {
     r->ray_rngs.clear();
     r->imu_rngs.clear();
+    r->p3d_rngs.clear();
     for (const RaySpec& s : r->spec.rays) r->ray_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    for (const P3dSpec& s : r->spec.p3ds) {
+      r->p3d_rngs.push_back(sensorRng(cfg.seed, name, "p3d " + s.name + " " + s.topic));
+    }
     for (const ImuSpec& s : r->spec.imus) r->imu_rngs.push_back(sensorRng(cfg.seed, name, s.name));
     for (ImuSensor& imu : r->imus) imu.reset();
   }

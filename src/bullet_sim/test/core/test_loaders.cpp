@@ -34,7 +34,7 @@ const char* kMinimalRobot = R"(<robot name="m">
     <sensor type="sonar" name="front_sonar"/>
   </gazebo>
   <gazebo>
-    <plugin name="p3d" filename="libgazebo_ros_p3d.so"/>
+    <plugin name="gripper" filename="libgazebo_ros_vacuum_gripper.so"/>
   </gazebo>
 </robot>)";
 
@@ -87,7 +87,7 @@ TEST(RobotLoader, BurgerSensorsAndDriveFromGazeboTags) {
 
 TEST(RobotLoader, UnsupportedPluginSensorAndMasslessCollisionAreNamedInWarnings) {
   const RobotSpec spec = parseRobot(kMinimalRobot, "robot_description");
-  EXPECT_TRUE(hasWarningWith(spec, "libgazebo_ros_p3d.so")) << ::testing::PrintToString(spec.warnings);
+  EXPECT_TRUE(hasWarningWith(spec, "libgazebo_ros_vacuum_gripper.so")) << ::testing::PrintToString(spec.warnings);
   EXPECT_TRUE(hasWarningWith(spec, "sonar"));
   EXPECT_TRUE(hasWarningWith(spec, "link 'bumper' has <collision> but no <inertial>"));
 }

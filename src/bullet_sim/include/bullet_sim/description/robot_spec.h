@@ -110,15 +110,40 @@ struct CameraSpec {
 /// Where the diff drive's odometry comes from (<odometrySource>).
 enum class OdomSource { World, Encoder };
 
-/// The libgazebo_ros_diff_drive.so plugin's parameters.
+/// The parameters of a wheeled drive plugin: libgazebo_ros_diff_drive.so, or
+/// libgazebo_ros_skid_steer_drive.so, whose front wheels are `left_joint` and `right_joint`
+/// and whose rear wheels (`left_rear_joint`, `right_rear_joint`) turn as the front wheel of
+/// their side. Defaults are the diff drive's; the skid steer's reader sets its own.
 struct DiffDriveSpec {
+  std::string plugin = "libgazebo_ros_diff_drive.so";  ///< the plugin file, for messages
   std::string left_joint, right_joint, command_topic = "cmd_vel", odometry_topic = "odom",
                                         odometry_frame = "odom",
                                         robot_base_frame = "base_footprint";
+  std::string left_rear_joint, right_rear_joint;  ///< skid steer only; empty otherwise
   double wheel_separation_m = 0.34, wheel_diameter_m = 0.15, wheel_torque_nm = 5,
          wheel_acceleration = 0, update_rate_hz = 100;
   OdomSource odometry_source = OdomSource::World;
   bool publish_odom_tf = true, publish_wheel_tf = false, publish_wheel_joint_state = false;
+  /// The odometry's covariance diagonal (x, y, yaw; z, roll and pitch get 1e12), as the
+  /// skid steer's <covariance_x>, <covariance_y>, <covariance_yaw>; unset: all zero.
+  std::optional<Eigen::Vector3d> odometry_covariance_xy_yaw;
+};
+
+/// A libgazebo_ros_p3d.so plugin: the ground truth of one link as nav_msgs/Odometry.
+struct P3dSpec {
+  std::string name;   ///< the <plugin name>: seeds its noise
+  std::string body;   ///< <bodyName>, a link of the robot
+  std::string topic;  ///< <topicName>
+  std::string frame = "world";  ///< <frameName>: world, map, or a link of the robot
+  Pose3 offset;       ///< <xyzOffset> and <rpyOffset>
+  double gaussian_noise = 0, update_rate_hz = 0;  ///< rate 0: every step
+};
+
+/// A libgazebo_ros_force.so plugin: the wrench of a geometry_msgs/Wrench topic applied to
+/// one link (world axes, at its centre of mass) at every step until the next message.
+struct ForceSpec {
+  std::string body;   ///< <bodyName>
+  std::string topic;  ///< <topicName>
 };
 
 /// One URDF <visual>, in its link's frame (for the camera renderer): its geometry (a mesh's
@@ -141,6 +166,8 @@ struct RobotSpec {
   std::vector<ImuSpec> imus;
   std::vector<CameraSpec> cameras;
   std::optional<DiffDriveSpec> diff_drive;
+  std::vector<P3dSpec> p3ds;
+  std::vector<ForceSpec> forces;
   std::vector<VisualSpec> visuals;
   /// The collision meshes, by <mesh filename> as written in the URDF.
   std::map<std::string, std::shared_ptr<const TriangleMesh>> collision_meshes;

@@ -1,6 +1,7 @@
 #ifndef BULLET_SIM_SENSOR_DATA_H
 #define BULLET_SIM_SENSOR_DATA_H
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -8,7 +9,7 @@
 
 namespace bullet_sim {
 
-enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates };
+enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates, GroundTruth };
 
 /// A sensor whose update period elapsed; index points into the robot spec's
 /// vector of that kind (0 for Odometry and JointStates).
@@ -44,6 +45,8 @@ struct OdometryData {
   std::string frame_id, child_frame_id;
   Pose3 pose;             ///< child (robot base) in the odometry frame
   Twist3 twist_in_child;  ///< body-frame twist, as nav_msgs/Odometry wants
+  /// Row-major 6 x 6 covariances (x, y, z, roll, pitch, yaw), as nav_msgs/Odometry has them.
+  std::array<double, 36> pose_covariance{}, twist_covariance{};
 };
 
 /// State of every non-fixed joint, laid out as sensor_msgs/JointState.

@@ -11,12 +11,13 @@ constexpr double kSnapMps = 0.01;
 
 }  // namespace
 
-DiffDriveController::DiffDriveController(const DiffDriveSpec& spec, size_t left_joint,
-                                         size_t right_joint, double left_max_radps,
-                                         double right_max_radps)
+DiffDriveController::DiffDriveController(const DiffDriveSpec& spec,
+                                         std::vector<size_t> left_joints,
+                                         std::vector<size_t> right_joints,
+                                         double left_max_radps, double right_max_radps)
     : spec_(spec),
       kinematics_{spec.wheel_separation_m, spec.wheel_diameter_m / 2.0},
-      joints_{left_joint, right_joint},
+      joints_{std::move(left_joints), std::move(right_joints)},
       max_radps_{left_max_radps, right_max_radps} {}
 
 double DiffDriveController::setCommand(double linear_mps, double angular_radps) {
@@ -40,7 +41,7 @@ void DiffDriveController::updateMotors(PhysicsRobot* robot, double time_s, doubl
   const double dt = std::max(time_s - last_update_s_, physics_dt_s);
   last_update_s_ = time_s;
   for (int side = 0; side < 2; ++side) {
-    const double current = robot->jointVelocity(joints_[side]) * radius_m;
+    const double current = robot->jointVelocity(joints_[side].front()) * radius_m;
     const double error = target[side] - current;
     if (spec_.wheel_acceleration == 0 || std::fabs(error) < kSnapMps) {
       instructed_mps_[side] = target[side];
@@ -48,13 +49,15 @@ void DiffDriveController::updateMotors(PhysicsRobot* robot, double time_s, doubl
       const double max_change = spec_.wheel_acceleration * dt;
       instructed_mps_[side] += std::clamp(error, -max_change, max_change);
     }
-    robot->setJointMotor(joints_[side], instructed_mps_[side] / radius_m, spec_.wheel_torque_nm);
+    for (const size_t joint : joints_[side]) {
+      robot->setJointMotor(joint, instructed_mps_[side] / radius_m, spec_.wheel_torque_nm);
+    }
   }
 }
 
 void DiffDriveController::integrateEncoder(const PhysicsRobot& robot, double dt_s) {
-  const Eigen::Vector2d base = kinematics_.baseVelocities(robot.jointVelocity(joints_[0]),
-                                                          robot.jointVelocity(joints_[1]));
+  const Eigen::Vector2d base = kinematics_.baseVelocities(
+      robot.jointVelocity(joints_[0].front()), robot.jointVelocity(joints_[1].front()));
   encoder_pose_ = advancePose(encoder_pose_, base[0] * dt_s, base[1] * dt_s);
   encoder_v_ = base[0];
   encoder_w_ = base[1];

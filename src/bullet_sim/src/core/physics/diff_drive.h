@@ -1,6 +1,8 @@
 #ifndef BULLET_SIM_CORE_DIFF_DRIVE_H
 #define BULLET_SIM_CORE_DIFF_DRIVE_H
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "bullet_sim/description/robot_spec.h"
@@ -9,18 +11,21 @@
 
 namespace bullet_sim {
 
-/// The libgazebo_ros_diff_drive.so behaviour: turns (v, w) into wheel velocity
-/// motors at the plugin's update rate, ramping the commanded rim speed by at
+/// The libgazebo_ros_diff_drive.so and libgazebo_ros_skid_steer_drive.so behaviour: turns
+/// (v, w) into wheel velocity motors at the plugin's update rate (every wheel of a side
+/// turns at that side's speed: a skid steer's front and rear wheel alike), ramping the commanded rim speed by at
 /// most wheelAcceleration * dt per update, with wheelTorque as the motor limit;
 /// and integrates encoder odometry from the wheel joint speeds. A command that would turn a
 /// wheel faster than its joint's <limit velocity> is scaled down whole, as a real base
 /// controller does: both wheels slow by the same factor, so the turn radius stays.
 class DiffDriveController {
  public:
-  /// `left_max_radps` / `right_max_radps`: the wheel joints' velocity limits (infinity for
-  /// none).
-  DiffDriveController(const DiffDriveSpec& spec, size_t left_joint, size_t right_joint,
-                      double left_max_radps, double right_max_radps);
+  /// `left_joints` / `right_joints`: each side's wheel joints, the first the one whose
+  /// speed the ramp and the encoder odometry read; `left_max_radps` / `right_max_radps`:
+  /// the lowest velocity limit among a side's joints (infinity for none).
+  DiffDriveController(const DiffDriveSpec& spec, std::vector<size_t> left_joints,
+                      std::vector<size_t> right_joints, double left_max_radps,
+                      double right_max_radps);
 
   /// Sets the command the motors follow from the next update.
   /// @return the factor (<= 1) it was scaled by to keep both wheels within their limits.
@@ -40,7 +45,7 @@ class DiffDriveController {
  private:
   DiffDriveSpec spec_;
   DiffDriveKinematics kinematics_;
-  size_t joints_[2];
+  std::vector<size_t> joints_[2];
   double max_radps_[2];
   double command_v_ = 0, command_w_ = 0;
   double instructed_mps_[2] = {0, 0};  ///< rim speeds given to the motors

@@ -47,6 +47,9 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
     if (!spec.cameras[i].trigger_topic.empty()) continue;
     entries_.push_back({SensorKind::Camera, i, spec.cameras[i].update_rate_hz});
   }
+  for (size_t i = 0; i < spec.p3ds.size(); ++i) {
+    entries_.push_back({SensorKind::GroundTruth, i, spec.p3ds[i].update_rate_hz});
+  }
   if (spec.diff_drive) {
     drive_rate_hz_ = spec.diff_drive->update_rate_hz;
     entries_.push_back({SensorKind::Odometry, 0, drive_rate_hz_});

@@ -1,5 +1,6 @@
 #include "topics/conversions.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace bullet_sim_node {
@@ -97,6 +98,9 @@ nav_msgs::Odometry toMsg(const bullet_sim::OdometryData& odom) {
   msg.child_frame_id = odom.child_frame_id;
   msg.pose.pose = toMsg(odom.pose);
   msg.twist.twist = toMsg(odom.twist_in_child);
+  std::copy(odom.pose_covariance.begin(), odom.pose_covariance.end(), msg.pose.covariance.begin());
+  std::copy(odom.twist_covariance.begin(), odom.twist_covariance.end(),
+            msg.twist.covariance.begin());
   return msg;
 }
 

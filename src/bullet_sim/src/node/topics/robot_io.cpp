@@ -50,6 +50,13 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
     imu_pubs_.push_back(CountedPublisher::advertise<sensor_msgs::Imu>(nh, imu.topic, kQueueSize));
   joint_state_pub_ =
       CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
+  for (const bullet_sim::P3dSpec& p3d : spec.p3ds)
+    ground_truth_pubs_.push_back(
+        CountedPublisher::advertise<nav_msgs::Odometry>(nh, p3d.topic, kQueueSize));
+  for (size_t i = 0; i < spec.forces.size(); ++i)
+    wrench_subs_.push_back(nh.subscribe<geometry_msgs::Wrench>(
+        spec.forces[i].topic, 1,
+        [this, i](const geometry_msgs::Wrench::ConstPtr& wrench) { onWrench(i, wrench); }));
   if (spec.diff_drive) {
     odom_pub_ = CountedPublisher::advertise<nav_msgs::Odometry>(
         nh, spec.diff_drive->odometry_topic, kQueueSize);
@@ -79,6 +86,14 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       if (joint_state_pub_.hasSubscribers())
         queue_.publish(joint_state_pub_.publisher(), toMsg(sim_.readJointStates(robot_)));
       break;
+    case bullet_sim::SensorKind::GroundTruth:
+      if (due.index < ground_truth_pubs_.size() && ground_truth_pubs_[due.index].hasSubscribers()) {
+        bullet_sim::OdometryData truth = sim_.readGroundTruth(robot_, due.index);
+        // As Gazebo's p3d: the frame under the tf_prefix, the body's link name as it is.
+        truth.frame_id = resolveFrame(tf_prefix_, truth.frame_id);
+        queue_.publish(ground_truth_pubs_[due.index].publisher(), toMsg(truth));
+      }
+      break;
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
   }
@@ -106,6 +121,22 @@ void RobotIo::publishOdometry() {
     queue_.publish(tf_pub_, std::move(tf));
   }
   if (odom_wanted) queue_.publish(odom_pub_.publisher(), toMsg(odom));
+}
+
+void RobotIo::onWrench(size_t index, const geometry_msgs::Wrench::ConstPtr& wrench) {
+  const double values[6] = {wrench->force.x,  wrench->force.y,  wrench->force.z,
+                            wrench->torque.x, wrench->torque.y, wrench->torque.z};
+  for (const double v : values) {
+    if (!std::isfinite(v)) {
+      ROS_WARN_THROTTLE(5.0, "robot %s: dropped a %s wrench with a field that is %f",
+                        robot_.c_str(), wrench_subs_[index].getTopic().c_str(), v);
+      return;
+    }
+  }
+  bullet_sim::Wrench w;
+  w.force_n = Eigen::Vector3d(values[0], values[1], values[2]);
+  w.torque_nm = Eigen::Vector3d(values[3], values[4], values[5]);
+  sim_.setPluginWrench(robot_, index, w);
 }
 
 void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {

@@ -7,6 +7,7 @@
 #include "topics/publish_queue.h"
 
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/Wrench.h>
 #include <ros/node_handle.h>
 
 #include <string>
@@ -38,6 +39,8 @@ class RobotIo {
 
  private:
   void onCmdVel(const geometry_msgs::Twist::ConstPtr& command);
+  /// A libgazebo_ros_force.so plugin's wrench message (plugin `index` of RobotSpec::forces).
+  void onWrench(size_t index, const geometry_msgs::Wrench::ConstPtr& wrench);
   void publishOdometry();
 
   bullet_sim::Simulation& sim_;
@@ -47,6 +50,8 @@ class RobotIo {
   std::vector<CountedPublisher> scan_pubs_;  ///< one per RaySpec, same index
   std::vector<CountedPublisher> imu_pubs_;   ///< one per ImuSpec, same index
   CountedPublisher odom_pub_;
+  std::vector<CountedPublisher> ground_truth_pubs_;  ///< one per P3dSpec, same index
+  std::vector<ros::Subscriber> wrench_subs_;         ///< one per ForceSpec, same index
   CountedPublisher joint_state_pub_;
   ros::Subscriber cmd_vel_sub_;
   ros::Publisher tf_pub_;  ///< /tf, for the odom transform

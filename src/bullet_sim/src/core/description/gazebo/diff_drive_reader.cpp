@@ -56,7 +56,9 @@ void checkWheels(const DiffDriveSpec& d, const std::string& where, const XmlValu
 
 void readDiffDrivePlugin(const XMLElement* plugin, const std::string& where,
                          const XmlValues& xml, RobotSpec* spec) {
-  if (spec->diff_drive) xml.fail(where, "a second libgazebo_ros_diff_drive.so plugin");
+  if (spec->diff_drive) {
+    xml.fail(where, "a second drive plugin (the first is " + spec->diff_drive->plugin + ")");
+  }
   DiffDriveSpec d;
   readJointsAndTopics(plugin, where, xml, &d);
   readWheels(plugin, where, xml, &d);

@@ -10,6 +10,7 @@
 #include <tinyxml2.h>
 
 #include "bullet_sim/errors.h"
+#include "description/gazebo/body_plugin_reader.h"
 #include "description/gazebo/camera_reader.h"
 #include "description/gazebo/depth_camera_reader.h"
 #include "description/gazebo/diff_drive_reader.h"
@@ -18,6 +19,7 @@
 #include "description/gazebo/link_extensions.h"
 #include "description/gazebo/plugin_parameters.h"
 #include "description/gazebo/ray_reader.h"
+#include "description/gazebo/skid_steer_reader.h"
 #include "description/xml_values.h"
 
 namespace bullet_sim {
@@ -58,6 +60,9 @@ using ModelPluginReader = void (*)(const XMLElement*, const std::string&, const 
 ModelPluginReader modelPluginReader(const std::string& file) {
   if (file == "libgazebo_ros_diff_drive.so") return readDiffDrivePlugin;
   if (file == "libgazebo_ros_imu.so") return readImuPlugin;
+  if (file == "libgazebo_ros_skid_steer_drive.so") return readSkidSteerDrivePlugin;
+  if (file == "libgazebo_ros_p3d.so") return readP3dPlugin;
+  if (file == "libgazebo_ros_force.so") return readForcePlugin;
   return nullptr;
 }
 

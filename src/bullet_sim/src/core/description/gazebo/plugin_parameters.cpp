@@ -38,8 +38,17 @@ const std::map<std::string, std::vector<std::string>>& knownParameters() {
         "wheelTorque",      "wheelAcceleration", "commandTopic",  "odometryTopic",
         "odometryFrame",    "robotBaseFrame", "odometrySource",   "publishWheelTF",
         "publishOdomTF",    "publishWheelJointState", "publishTf", "legacyMode"};
+    const std::vector<std::string> skid_steer = {
+        "leftFrontJoint", "rightFrontJoint", "leftRearJoint",  "rightRearJoint",
+        "wheelSeparation", "wheelDiameter",  "torque",         "commandTopic",
+        "odometryTopic",  "odometryFrame",   "robotBaseFrame", "broadcastTF",
+        "covariance_x",   "covariance_y",    "covariance_yaw"};
     return std::map<std::string, std::vector<std::string>>{
         {"libgazebo_ros_diff_drive.so", diff_drive},
+        {"libgazebo_ros_skid_steer_drive.so", skid_steer},
+        {"libgazebo_ros_p3d.so",
+         {"bodyName", "topicName", "frameName", "xyzOffset", "rpyOffset", "gaussianNoise"}},
+        {"libgazebo_ros_force.so", {"bodyName", "topicName"}},
         {"libgazebo_ros_laser.so", laser},
         {"libgazebo_ros_gpu_laser.so", laser},
         {"libgazebo_ros_camera.so", camera},
