@@ -46,6 +46,36 @@ btDefaultCollisionConstructionInfo poolOf(int pool_size) {
 
 }  // namespace
 
+bool closesFasterThan(const btPersistentManifold& manifold, double speed_mps) {
+  const btRigidBody* a = btRigidBody::upcast(manifold.getBody0());
+  const btRigidBody* b = btRigidBody::upcast(manifold.getBody1());
+  for (int i = 0; i < manifold.getNumContacts(); ++i) {
+    const btManifoldPoint& cp = manifold.getContactPoint(i);
+    if (cp.getDistance() > manifold.getContactProcessingThreshold()) continue;
+    btVector3 v(0, 0, 0);
+    if (a) v += a->getVelocityInLocalPoint(cp.getPositionWorldOnA() - a->getCenterOfMassPosition());
+    if (b) v -= b->getVelocityInLocalPoint(cp.getPositionWorldOnB() - b->getCenterOfMassPosition());
+    // The normal points from B to A: A approaching B moves against it.
+    if (-v.dot(cp.m_normalWorldOnB) > speed_mps) return true;
+  }
+  return false;
+}
+
+void ImpactAwareWorld::solveConstraints(btContactSolverInfo& info) {
+  bool impact = false;
+  btDispatcher* dispatcher = getDispatcher();
+  for (int i = 0; i < dispatcher->getNumManifolds() && !impact; ++i) {
+    impact = closesFasterThan(*dispatcher->getManifoldByIndexInternal(i), kImpactApproachMps);
+  }
+  // The step after an impact starts from its impulses (warm starting): it needs as many
+  // iterations to take them back, or they throw the body up.
+  steps_since_impact_ = impact ? 0 : std::min(steps_since_impact_ + 1, kStepsAfterImpact + 1);
+  info.m_numIterations = steps_since_impact_ <= kStepsAfterImpact
+                             ? std::max(kImpactIterations, iterations_)
+                             : iterations_;
+  btDiscreteDynamicsWorld::solveConstraints(info);
+}
+
 CollisionBackend::CollisionBackend(int pool_size) : config(poolOf(pool_size)) {}
 
 bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a,
@@ -89,7 +119,7 @@ std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticSha
 PhysicsWorld::PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity)
     : backend_(std::make_unique<CollisionBackend>(kWorldPoolSize)),
       solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
-      world_(std::make_unique<btDiscreteDynamicsWorld>(&backend_->dispatcher,
+      world_(std::make_unique<ImpactAwareWorld>(&backend_->dispatcher,
                                                         &backend_->broadphase, solver_.get(),
                                                         &backend_->config)) {
   gContactAddedCallback = combineFriction;
@@ -105,6 +135,7 @@ PhysicsWorld::~PhysicsWorld() {
 
 void PhysicsWorld::setSolver(const SolverSettings& settings) {
   btContactSolverInfo& info = world_->getSolverInfo();
+  world_->setIterations(settings.iterations);
   info.m_numIterations = settings.iterations;
   info.m_sor = static_cast<btScalar>(settings.sor);
   info.m_erp = static_cast<btScalar>(settings.erp);

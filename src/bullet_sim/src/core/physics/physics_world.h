@@ -45,9 +45,42 @@ struct CollisionBackend {
 std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticShapes& statics,
                                                                  btCollisionWorld* world);
 
+/// Solver iterations of a step in which a contact closes faster than kImpactApproachMps
+/// (a body dropped from 1.3 cm or more lands, or hits something hard), and of any other step.
+/// Bullet's sequential impulses pass an impact on a 28 g wheel to the 0.9 kg body it hangs
+/// from a few percent per iteration, while a contact on the body itself (the Burger's
+/// caster) stops it at once: 10 iterations leave the body pitching at up to 8 rad/s and
+/// bouncing at 0.5 m/s after a 0.2 m drop. Gazebo's ODE runs 50 iterations of SOR 1.3 at
+/// every step; here the extra iterations go only to the steps that need them.
+constexpr int kSolverIterations = 10;
+constexpr int kImpactIterations = 100;
+constexpr double kImpactApproachMps = 0.5;
+constexpr int kStepsAfterImpact = 3;
+
+/// A contact of `manifold` whose two bodies close faster than `speed_mps` along its normal.
+bool closesFasterThan(const btPersistentManifold& manifold, double speed_mps);
+
+/// btDiscreteDynamicsWorld that gives a step with an impact (closesFasterThan
+/// kImpactApproachMps), and the kStepsAfterImpact steps after it, at least
+/// kImpactIterations solver iterations, any other the iterations set (kSolverIterations
+/// unless set_physics_properties changed them).
+class ImpactAwareWorld : public btDiscreteDynamicsWorld {
+ public:
+  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+  void setIterations(int iterations) { iterations_ = iterations; }
+
+ protected:
+  void solveConstraints(btContactSolverInfo& info) override;
+
+ private:
+  int steps_since_impact_ = kStepsAfterImpact + 1;
+  int iterations_ = kSolverIterations;
+};
+
 /// A Bullet dynamics world with the static shapes of a world. Parts of one robot never
 /// collide with each other (Gazebo's self_collide false); friction of a contact is the
-/// smaller of the two surfaces' (as ODE does).
+/// smaller of the two surfaces' (as ODE does); steps with an impact solve longer
+/// (ImpactAwareWorld).
 class PhysicsWorld {
  public:
   PhysicsWorld(const StaticShapes& statics, const Eigen::Vector3d& gravity);
@@ -67,7 +100,7 @@ class PhysicsWorld {
   RobotPairFilter filter_;
   std::unique_ptr<CollisionBackend> backend_;
   std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
-  std::unique_ptr<btDiscreteDynamicsWorld> world_;
+  std::unique_ptr<ImpactAwareWorld> world_;
   std::vector<std::unique_ptr<btCollisionObject>> objects_;
 };
 
