@@ -1,6 +1,7 @@
 #ifndef BULLET_SIM_ROBOT_SPEC_H
 #define BULLET_SIM_ROBOT_SPEC_H
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -20,6 +21,12 @@ namespace bullet_sim {
 
 /// The geometry description shared with the renderer (sim_render/geometry.h).
 using Geometry = sim_render::Geometry;
+
+/// A friction coefficient as Gazebo keeps it (FrictionPyramid::SetMu): a negative one
+/// becomes FLT_MAX, friction without a limit (a contact then takes the other surface's).
+inline double frictionCoefficient(double mu) {
+  return mu < 0 ? static_cast<double>(std::numeric_limits<float>::max()) : mu;
+}
 
 /// Gazebo surface parameters of one link (<gazebo reference="link"><mu1>...).
 struct SurfaceParams {
