@@ -77,6 +77,7 @@ void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
   for (const CameraSpec& s : spec.cameras) {
     requireLink(*r->physics, name, "camera '" + s.name + "'", s.link);
   }
+  equipContactAndConeSensors(name, r);
   double joint_state_rate_hz = kDefaultJointStateRateHz;
   if (spec.diff_drive) {
     const DiffDriveSpec& d = *spec.diff_drive;

@@ -46,6 +46,45 @@ struct RaySpec {
   int samples = 1;
 };
 
+/// The rays of a <sensor type="ray"> as Gazebo's MultiRayShape casts them: `samples`
+/// horizontal angles from min to max (yaw 0 alone when there is one) for each of
+/// `vertical_samples` vertical angles (pitch 0 alone when there is one; up is positive),
+/// each ray from range_min to range_max along the sensor's x axis turned by yaw and pitch.
+struct RayConeSpec {
+  int samples = 1, vertical_samples = 1;
+  double resolution = 1, vertical_resolution = 1;  ///< ranges per ray (<scan> <resolution>)
+  double min_angle_rad = 0, max_angle_rad = 0, vertical_min_angle_rad = 0,
+         vertical_max_angle_rad = 0, range_min_m = 0, range_max_m = 0;
+};
+
+/// A <sensor type="ray"> with libgazebo_ros_range.so: a sensor_msgs/Range of the nearest
+/// of its rays. Defaults are the plugin's.
+struct RangeSpec {
+  std::string name, link, topic = "/range", frame_id = "/world";
+  Pose3 pose_in_link;
+  RayConeSpec rays;
+  double update_rate_hz = 0;  ///< the sensor's <update_rate>, throttled by <updateRate>
+  double gaussian_noise = 0, fov_rad = 0.05;
+  bool infrared = false;  ///< <radiation>: "ultrasound" (the default) or anything else
+};
+
+/// A <sensor type="ray"> with libgazebo_ros_block_laser.so: a sensor_msgs/PointCloud of
+/// every ray's end point. Defaults are the plugin's.
+struct BlockLaserSpec {
+  std::string name, link, topic = "/world", frame_id = "/world";
+  Pose3 pose_in_link;
+  RayConeSpec rays;
+  double update_rate_hz = 0;  ///< the sensor's <update_rate> (the plugin's is not used)
+  double gaussian_noise = 0;
+};
+
+/// A <sensor type="contact"> with libgazebo_ros_bumper.so: the contacts of one collision of
+/// the sensor's link, as gazebo_msgs/ContactsState. Defaults are the plugin's.
+struct BumperSpec {
+  std::string name, link, collision, topic = "bumper_states", frame_id = "world";
+  double update_rate_hz = 0;  ///< the sensor's <update_rate>
+};
+
 /// An IMU: a <sensor type="imu"> or a libgazebo_ros_imu(_sensor).so plugin.
 struct ImuSpec {
   std::string name, link, topic = "imu", frame_id;
@@ -124,6 +163,9 @@ struct RobotSpec {
   std::vector<RaySpec> rays;
   std::vector<ImuSpec> imus;
   std::vector<CameraSpec> cameras;
+  std::vector<RangeSpec> ranges;
+  std::vector<BlockLaserSpec> block_lasers;
+  std::vector<BumperSpec> bumpers;
   std::optional<DiffDriveSpec> diff_drive;
   std::vector<VisualSpec> visuals;
   /// The collision meshes, by <mesh filename> as written in the URDF.

@@ -1,6 +1,7 @@
 #include "topics/robot_io.h"
 
 #include "topics/conversions.h"
+#include "topics/sensor_conversions.h"
 #include "topics/tf_prefix.h"
 
 #include <nav_msgs/Odometry.h>
@@ -48,6 +49,15 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
         CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, ray.topic, kQueueSize));
   for (const bullet_sim::ImuSpec& imu : spec.imus)
     imu_pubs_.push_back(CountedPublisher::advertise<sensor_msgs::Imu>(nh, imu.topic, kQueueSize));
+  for (const bullet_sim::RangeSpec& range : spec.ranges)
+    range_pubs_.push_back(
+        CountedPublisher::advertise<sensor_msgs::Range>(nh, range.topic, kQueueSize));
+  for (const bullet_sim::BlockLaserSpec& laser : spec.block_lasers)
+    block_laser_pubs_.push_back(
+        CountedPublisher::advertise<sensor_msgs::PointCloud>(nh, laser.topic, kQueueSize));
+  for (const bullet_sim::BumperSpec& bumper : spec.bumpers)
+    bumper_pubs_.push_back(
+        CountedPublisher::advertise<gazebo_msgs::ContactsState>(nh, bumper.topic, kQueueSize));
   joint_state_pub_ =
       CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
   if (spec.diff_drive) {
@@ -81,6 +91,11 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       break;
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
+    case bullet_sim::SensorKind::Range:
+    case bullet_sim::SensorKind::BlockLaser:
+    case bullet_sim::SensorKind::Bumper:
+      publishRangeOrContacts(due);
+      break;
   }
 }
 
@@ -106,6 +121,28 @@ void RobotIo::publishOdometry() {
     queue_.publish(tf_pub_, std::move(tf));
   }
   if (odom_wanted) queue_.publish(odom_pub_.publisher(), toMsg(odom));
+}
+
+void RobotIo::publishRangeOrContacts(const bullet_sim::DueSensor& due) {
+  using Kind = bullet_sim::SensorKind;
+  const std::vector<CountedPublisher>& pubs = due.kind == Kind::Range        ? range_pubs_
+                                              : due.kind == Kind::BlockLaser ? block_laser_pubs_
+                                                                             : bumper_pubs_;
+  if (due.index >= pubs.size() || !pubs[due.index].hasSubscribers()) return;
+  const ros::Publisher& pub = pubs[due.index].publisher();
+  if (due.kind == Kind::Range) {
+    sensor_msgs::Range msg = toMsg(sim_.readRange(robot_, due.index));
+    msg.header.frame_id = resolveFrame(tf_prefix_, msg.header.frame_id);
+    queue_.publish(pub, std::move(msg));
+  } else if (due.kind == Kind::BlockLaser) {
+    sensor_msgs::PointCloud msg = toMsg(sim_.readBlockLaser(robot_, due.index));
+    msg.header.frame_id = resolveFrame(tf_prefix_, msg.header.frame_id);
+    queue_.publish(pub, std::move(msg));
+  } else {
+    gazebo_msgs::ContactsState msg = toMsg(sim_.readBumper(robot_, due.index));
+    msg.header.frame_id = resolveFrame(tf_prefix_, msg.header.frame_id);
+    queue_.publish(pub, std::move(msg));
+  }
 }
 
 void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {

@@ -14,7 +14,8 @@
 
 namespace bullet_sim_node {
 
-/// Publishes a robot's sensors (scan, imu, odom + tf, joint_states) as they fall due and
+/// Publishes a robot's sensors (scan, imu, odom + tf, joint_states, range, block laser
+/// points, bumper contacts) as they fall due and
 /// feeds its diff-drive commands to the simulation. Topic names come from the robot's
 /// Gazebo tags, resolved in `robot_nh` (the robot's namespace); frame ids (odom, base,
 /// scan, imu) are put under `tf_prefix` as Gazebo's plugins do. A sensor topic nobody
@@ -39,6 +40,8 @@ class RobotIo {
  private:
   void onCmdVel(const geometry_msgs::Twist::ConstPtr& command);
   void publishOdometry();
+  /// A range sensor's, block laser's or bumper's reading, if someone subscribes.
+  void publishRangeOrContacts(const bullet_sim::DueSensor& due);
 
   bullet_sim::Simulation& sim_;
   PublishQueue& queue_;
@@ -46,6 +49,9 @@ class RobotIo {
   const std::string tf_prefix_;
   std::vector<CountedPublisher> scan_pubs_;  ///< one per RaySpec, same index
   std::vector<CountedPublisher> imu_pubs_;   ///< one per ImuSpec, same index
+  std::vector<CountedPublisher> range_pubs_;  ///< one per RangeSpec, same index
+  std::vector<CountedPublisher> block_laser_pubs_;  ///< one per BlockLaserSpec, same index
+  std::vector<CountedPublisher> bumper_pubs_;  ///< one per BumperSpec, same index
   CountedPublisher odom_pub_;
   CountedPublisher joint_state_pub_;
   ros::Subscriber cmd_vel_sub_;
