@@ -174,6 +174,10 @@ struct RobotSpec {
   /// SDF model the pose of its root link (the canonical link) in the <model> frame. Spawn
   /// and model poses are poses of the model frame, as in Gazebo.
   Pose3 root_link_in_model;
+  /// A <static> SDF model (or one anchored to the world) with sensors or plugins: every link
+  /// is fixed to the root link, and the robot stays where it is put (its bodies are
+  /// static, as Gazebo's static models are; set_model_state still moves it).
+  bool is_static = false;
   /// Unsupported plugins/sensors, links with collision but no inertial, ...
   std::vector<std::string> warnings;
 };
@@ -207,7 +211,8 @@ RobotSpec parseRobotFile(const std::string& path);
 /// visual geometry (material scripts give Gazebo's colours), its revolute, continuous,
 /// prismatic and fixed joints, nested models with `::`-scoped link names; the tree is
 /// rooted at the canonical link. <include>s are resolved through `resolver`.
-/// Sensors and plugins of the model are not simulated (a warning each).
+/// Its links' <sensor>s and its <plugin>s are read as a URDF's <gazebo> blocks are (the
+/// same readers; unsupported ones a warning each). A <static> model gives a static spec.
 /// @throws LoadError naming the source, element and value.
 RobotSpec parseSdfModelString(const std::string& sdf_xml, const std::string& source_name,
                               const UriResolver& resolver);

@@ -33,6 +33,7 @@ class Planner {
     const urdf::LinkConstSharedPtr root = spec_.urdf->getRoot();
     addBody(*root, Eigen::Isometry3d::Identity());
     for (BodyPlan& body : plan_.bodies) finishMass(&body);
+    plan_.is_static = spec_.is_static;
     std::sort(plan_.joints.begin(), plan_.joints.end(),
               [](const JointPlan& a, const JointPlan& b) { return a.name < b.name; });
     return std::move(plan_);

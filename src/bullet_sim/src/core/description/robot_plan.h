@@ -53,6 +53,7 @@ struct RobotPlan {
   std::vector<JointPlan> joints;  ///< every hinge, sorted by name
   std::map<std::string, size_t> body_of_link;
   std::map<std::string, Eigen::Isometry3d> T_model_link;  ///< link poses at zero joint angles
+  bool is_static = false;  ///< RobotSpec::is_static: every body is a static Bullet body
   std::vector<std::string> warnings;
 };
 

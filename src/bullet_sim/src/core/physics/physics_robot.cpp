@@ -64,6 +64,12 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   Body body;
   body.T_com_root = plan.T_root_com.inverse();
   body.material.robot_id = robot_id;
+  // A static robot's bodies have no mass: Bullet never moves them (a mesh keeps its
+  // triangles, as the world's static shapes do).
+  const Motion motion = plan_.is_static ? Motion::Static : Motion::Moving;
+  const double mass_kg = plan_.is_static ? 0.0 : plan.mass_kg;
+  const Eigen::Vector3d inertia =
+      plan_.is_static ? Eigen::Vector3d::Zero() : Eigen::Vector3d(plan.principal_inertia);
   const bool single_at_com =
       plan.collisions.size() == 1 &&
       (body.T_com_root * plan.collisions[0].T_root_geom).isApprox(Eigen::Isometry3d::Identity(), 1e-12);
@@ -72,14 +78,13 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   } else if (single_at_com) {
     // Saves the compound's per-step overhead (the Burger's wheels). Its friction is the
     // body's own (set below).
-    body.shape = makeCollisionShape(plan.collisions[0], plan.collisions[0].mesh.get(),
-                                    Motion::Moving);
+    body.shape = makeCollisionShape(plan.collisions[0], plan.collisions[0].mesh.get(), motion);
   } else {
     // A robot body has a handful of parts: a linear scan beats a child AABB tree.
     auto compound =
         std::make_unique<btCompoundShape>(false, static_cast<int>(plan.collisions.size()));
     for (const CollisionPlan& c : plan.collisions) {
-      body.children.push_back(makeCollisionShape(c, c.mesh.get(), Motion::Moving));
+      body.children.push_back(makeCollisionShape(c, c.mesh.get(), motion));
       compound->addChildShape(toBt(body.T_com_root * c.T_root_geom), body.children.back().get());
       body.material.child_friction.push_back(c.friction);
     }
@@ -87,8 +92,8 @@ void PhysicsRobot::buildBody(const BodyPlan& plan, int robot_id) {
   }
   // No motion state: poses are read from the bodies, so Bullet need not copy
   // them out after every step.
-  btRigidBody::btRigidBodyConstructionInfo info(plan.mass_kg, nullptr, body.shape.get(),
-                                                toBt(plan.principal_inertia));
+  btRigidBody::btRigidBodyConstructionInfo info(mass_kg, nullptr, body.shape.get(),
+                                                toBt(inertia));
   body.rigid = std::make_unique<btRigidBody>(info);
   if (single_at_com) body.rigid->setFriction(plan.collisions[0].friction);
   // A robot that has come to rest sleeps, as resting bodies do in Bullet: its

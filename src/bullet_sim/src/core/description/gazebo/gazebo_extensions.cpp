@@ -1,6 +1,9 @@
 #include "description/gazebo/gazebo_extensions.h"
 
 #include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -87,7 +90,10 @@ class ExtensionReader {
     if (!link.empty()) readLinkMaterial(gazebo, link, xml_, spec_);
     for (const XMLElement* s = gazebo->FirstChildElement("sensor"); s;
          s = s->NextSiblingElement("sensor")) {
-      readSensor(s, link);
+      const std::string where =
+          "<gazebo reference=\"" + link + "\"> <sensor name=\"" + attribute(s, "name") + "\">";
+      if (link.empty()) xml_.fail(where, "a sensor needs a <gazebo reference=\"link\">");
+      readSensor(s, link, where);
     }
     for (const XMLElement* p = gazebo->FirstChildElement("plugin"); p;
          p = p->NextSiblingElement("plugin")) {
@@ -109,12 +115,19 @@ class ExtensionReader {
     }
   }
 
+ /// An SDF <sensor> of `link` (its <pose> in the link frame), named by `where`.
+  void readSdfSensor(const XMLElement* s, const std::string& link, const std::string& where) {
+    readSensor(s, link, where);
+  }
+  /// An SDF model's <plugin>, `prefix` naming the model.
+  void readSdfPlugin(const XMLElement* p, const std::string& prefix) {
+    readModelPlugin(p, prefix);
+  }
+
  private:
-  void readSensor(const XMLElement* s, const std::string& link) {
+  void readSensor(const XMLElement* s, const std::string& link, const std::string& where) {
     const std::string type = attribute(s, "type");
     const std::string name = attribute(s, "name");
-    const std::string where = "<gazebo reference=\"" + link + "\"> <sensor name=\"" + name + "\">";
-    if (link.empty()) xml_.fail(where, "a sensor needs a <gazebo reference=\"link\">");
     const XMLElement* plugin = s->FirstChildElement("plugin");
     const std::string file = plugin ? attribute(plugin, "filename") : "";
     if (!knownSensorType(type)) {
@@ -139,10 +152,10 @@ class ExtensionReader {
     }
   }
 
-  void readModelPlugin(const XMLElement* p) {
+  void readModelPlugin(const XMLElement* p, const std::string& prefix = "") {
     const std::string file = attribute(p, "filename");
     const std::string where =
-        "<plugin name=\"" + attribute(p, "name") + "\" filename=\"" + file + "\">";
+        prefix + "<plugin name=\"" + attribute(p, "name") + "\" filename=\"" + file + "\">";
     warnUnknownPluginParameters(p, file, where, &spec_->warnings);
     if (const ModelPluginReader read = modelPluginReader(file)) {
       read(p, where, xml_, spec_);
@@ -160,7 +173,54 @@ class ExtensionReader {
   std::vector<Pluginless> pluginless_;
 };
 
+/// `xml` parsed, or a LoadError naming `where`.
+std::unique_ptr<tinyxml2::XMLDocument> parseElement(const std::string& xml,
+                                                    const std::string& source,
+                                                    const std::string& where) {
+  auto doc = std::make_unique<tinyxml2::XMLDocument>();
+  if (doc->Parse(xml.c_str()) != tinyxml2::XML_SUCCESS || !doc->RootElement()) {
+    throw LoadError(source + ": " + where + ": malformed XML: " + doc->ErrorStr());
+  }
+  return doc;
+}
+
+/// Writes `pose` as the element's <pose> ("x y z roll pitch yaw"), replacing any.
+void setPose(tinyxml2::XMLElement* e, const Pose3& pose) {
+  if (XMLElement* old = e->FirstChildElement("pose")) e->DeleteChild(old);
+  const Eigen::Matrix3d R = pose.orientation.normalized().toRotationMatrix();
+  // roll-pitch-yaw of R = Rz(yaw) Ry(pitch) Rx(roll), as SDF reads a pose; at pitch +-pi/2
+  // only yaw - roll (or yaw + roll) is defined: roll 0 carries it all in yaw.
+  const double pitch = std::asin(std::max(-1.0, std::min(1.0, -R(2, 0))));
+  const bool gimbal_lock = std::abs(R(2, 0)) > 1 - 1e-12;
+  const double roll = gimbal_lock ? 0.0 : std::atan2(R(2, 1), R(2, 2));
+  const double yaw = gimbal_lock ? std::atan2(-R(0, 1), R(1, 1)) : std::atan2(R(1, 0), R(0, 0));
+  std::ostringstream text;
+  text.precision(17);
+  text << pose.position.x() << ' ' << pose.position.y() << ' ' << pose.position.z() << ' '
+       << roll << ' ' << pitch << ' ' << yaw;
+  XMLElement* p = e->GetDocument()->NewElement("pose");
+  p->SetText(text.str().c_str());
+  e->InsertFirstChild(p);
+}
+
 }  // namespace
+
+void readSdfModelExtensions(const std::vector<SdfSensorText>& sensors,
+                            const std::vector<SdfPluginText>& plugins,
+                            const std::string& source, RobotSpec* spec) {
+  ExtensionReader reader(source, spec);
+  for (const SdfSensorText& s : sensors) {
+    const auto doc = parseElement(s.xml, source, s.where);
+    XMLElement* sensor = doc->RootElement();
+    setPose(sensor, s.pose_in_link);
+    reader.readSdfSensor(sensor, s.link, s.where);
+  }
+  for (const SdfPluginText& p : plugins) {
+    const auto doc = parseElement(p.xml, source, p.where);
+    reader.readSdfPlugin(doc->RootElement(), p.where);
+  }
+  reader.finish();
+}
 
 void parseGazeboExtensions(const std::string& urdf_xml, const std::string& source,
                            RobotSpec* spec) {

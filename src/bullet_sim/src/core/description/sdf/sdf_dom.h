@@ -80,6 +80,7 @@ struct SdfSensor {
   bool always_on = false, visualize = false;
   std::string topic;  ///< <topic>, "" when absent
   std::vector<SdfPlugin> plugins;
+  std::string xml;  ///< the <sensor> element itself, printed, for the sensor readers
 };
 
 /// <inertial>: mass and moments about the centre of mass, in the frame T_link_inertial.

@@ -7,7 +7,9 @@
 
 #include "bullet_sim/errors.h"
 #include "description/robot_plan.h"
+#include "description/gazebo/gazebo_extensions.h"
 #include "description/sdf/sdf_model_entries.h"
+#include "description/sdf/sdf_urdf_convert.h"
 #include "description/sdf/sdf_urdf_joint.h"
 #include "description/sdf/sdf_urdf_link.h"
 #include "description/urdf/robot_parser.h"
@@ -20,21 +22,27 @@ namespace {
 class SdfModelConverter {
  public:
   SdfModelConverter(const SdfModel& model, const std::string& source,
-                    const UriResolver& resolver)
+                    const UriResolver& resolver, bool is_static)
       : model_(model),
+        source_(source),
         where_(source + ": model '" + model.name + "'"),
         resolver_(resolver),
-        links_(where_, resolver, &spec_) {}
+        is_static_(is_static),
+        links_(where_, resolver, &spec_, is_static) {}
 
   RobotSpec convert() {
     entries_ = ModelEntries::of(model_, where_, &spec_.warnings);
     const auto canonical = model_.canonicalLink();
     if (!canonical) throw LoadError(where_ + ": has no link");
-    const std::string root = entries_.treeRoot(canonical->first);
+    const std::string root = is_static_ ? canonical->first : entries_.treeRoot(canonical->first);
     urdf_ = std::make_shared<urdf::ModelInterface>();
     urdf_->name_ = model_.name;
-    addSubtree(root);
-    warnUnjoined(canonical->first);
+    if (is_static_) {
+      addStaticTree(root);
+    } else {
+      addSubtree(root);
+      warnUnjoined(canonical->first);
+    }
     initTree();
     spec_.name = model_.name;
     spec_.urdf = urdf_;
@@ -42,7 +50,12 @@ class SdfModelConverter {
     addVisuals();
     // Mesh file names were resolved from the SDF file's folder above.
     loadRobotMeshes(resolver_, "", where_, &spec_);
-    warnAboutPlugins(model_);
+    spec_.is_static = is_static_;
+    std::vector<SdfPluginText> plugins;
+    collectPlugins(model_, "model '" + model_.name + "'", &plugins);
+    std::vector<SdfSensorText> sensors = links_.sensors();
+    for (SdfSensorText& s : sensors) s.where = s.where.substr(source_.size() + 2);
+    readSdfModelExtensions(sensors, plugins, source_, &spec_);
     return std::move(spec_);
   }
 
@@ -59,6 +72,25 @@ class SdfModelConverter {
       addUrdfJoint(j, entry, entries_.link(j.child, where_), where_, urdf_.get(),
                    &spec_.warnings);
       addSubtree(j.child);
+    }
+  }
+
+  /// A static model's links all stand still: each is fixed where the model puts it to the
+  /// canonical link `root` (its joints do not move in Gazebo either).
+  void addStaticTree(const std::string& root) {
+    const LinkEntry& base = entries_.link(root, where_);
+    urdf_->links_[root] = links_.convert(base);
+    for (const LinkEntry& l : entries_.links) {
+      if (l.name == root) continue;
+      urdf_->links_[l.name] = links_.convert(l);
+      auto joint = std::make_shared<urdf::Joint>();
+      joint->name = root + "_to_" + l.name + "_static";
+      joint->type = urdf::Joint::FIXED;
+      joint->parent_link_name = root;
+      joint->child_link_name = l.name;
+      joint->parent_to_joint_origin_transform =
+          toUrdfPose(base.T_model_link.inverse() * l.T_model_link);
+      urdf_->joints_[joint->name] = joint;
     }
   }
 
@@ -98,16 +130,19 @@ class SdfModelConverter {
     }
   }
 
-  void warnAboutPlugins(const SdfModel& m) {
-    for (const SdfPlugin& p : m.plugins) {
-      spec_.warnings.push_back(where_ + ": plugin '" + p.filename + "' is not supported: ignored");
+  /// The <plugin>s of `m` and its nested models, each named by its model in `where`.
+  static void collectPlugins(const SdfModel& m, const std::string& where,
+                             std::vector<SdfPluginText>* out) {
+    for (const SdfPlugin& p : m.plugins) out->push_back({p.xml, where + " "});
+    for (const SdfModel& nested : m.models) {
+      collectPlugins(nested, where + " model '" + nested.name + "'", out);
     }
-    for (const SdfModel& nested : m.models) warnAboutPlugins(nested);
   }
 
   const SdfModel& model_;
-  std::string where_;
+  std::string source_, where_;
   const UriResolver& resolver_;
+  bool is_static_;
   RobotSpec spec_;
   SdfLinkConverter links_;
   ModelEntries entries_;
@@ -118,7 +153,19 @@ class SdfModelConverter {
 
 RobotSpec parseSdfModel(const SdfModel& model, const std::string& source,
                         const UriResolver& resolver) {
-  return SdfModelConverter(model, source, resolver).convert();
+  return SdfModelConverter(model, source, resolver,
+                           model.is_static || isAnchoredToWorld(model)).convert();
+}
+
+bool carriesSensorsOrPlugins(const SdfModel& model) {
+  if (!model.plugins.empty()) return true;
+  for (const SdfLink& l : model.links) {
+    if (!l.sensors.empty()) return true;
+  }
+  for (const SdfModel& nested : model.models) {
+    if (carriesSensorsOrPlugins(nested)) return true;
+  }
+  return false;
 }
 
 bool isAnchoredToWorld(const SdfModel& model, std::string* joint_name, bool* fixed) {

@@ -101,6 +101,9 @@ SdfSensor readSensor(const XMLElement* e, const SdfValues& v, const FrameScope& 
   out.visualize = v.boolean(e, "visualize", false);
   out.topic = v.text(e, "topic", "");
   out.plugins = readSdfPlugins(e, v);
+  tinyxml2::XMLPrinter printer;
+  e->Accept(&printer);
+  out.xml = printer.CStr();
   return out;
 }
 

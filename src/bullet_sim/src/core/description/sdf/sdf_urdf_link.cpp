@@ -5,6 +5,7 @@
 
 #include "bullet_sim/errors.h"
 #include "description/description_geometry.h"
+#include "description/robot_plan.h"
 #include "description/material/visual_appearance.h"
 #include "description/sdf/sdf_surface.h"
 #include "description/sdf/sdf_urdf_convert.h"
@@ -43,18 +44,24 @@ urdf::LinkSharedPtr SdfLinkConverter::convert(const LinkEntry& entry) {
   const SdfLink& l = *entry.link;
   auto out = std::make_shared<urdf::Link>();
   out->name = entry.name;
-  out->inertial = inertialOf(l);
   const std::string where = where_ + " link '" + entry.name + "'";
   // Static links may have a bad inertia (Gazebo saves them with nan moments); a moving
-  // link cannot be simulated with it.
-  checkInertial(*out->inertial, where);
+  // link cannot be simulated with it. A static link's body never moves: any inertia does.
+  if (is_static_) {
+    out->inertial = std::make_shared<urdf::Inertial>();
+    out->inertial->mass = out->inertial->ixx = out->inertial->iyy = out->inertial->izz = 1;
+  } else {
+    out->inertial = inertialOf(l);
+    checkInertial(*out->inertial, where);
+  }
   addCollisions(l, entry.name, where, out.get());
   addVisuals(l, where, out.get());
   if (!out->collision_array.empty()) out->collision = out->collision_array.front();
   if (!out->visual_array.empty()) out->visual = out->visual_array.front();
   for (const SdfSensor& sensor : l.sensors) {
-    spec_->warnings.push_back(where + ": sensor '" + sensor.name +
-                              "' is not simulated (sensors of SDF models are not)");
+    sensors_.push_back({sensor.xml, entry.name,
+                        where + " <sensor name=\"" + sensor.name + "\">",
+                        toPose3(sensor.T_link_sensor)});
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include "bullet_sim/description/resource_paths.h"
 #include "bullet_sim/description/robot_spec.h"
+#include "description/gazebo/gazebo_extensions.h"
 #include "description/sdf/sdf_model_entries.h"
 
 namespace bullet_sim {
@@ -18,13 +19,19 @@ class SdfLinkConverter {
  public:
   /// `where` names the model in messages; warnings and surfaces go to `spec`, which must
   /// outlive the converter.
-  SdfLinkConverter(std::string where, const UriResolver& resolver, RobotSpec* spec)
-      : where_(std::move(where)), resolver_(resolver), spec_(spec) {}
+  /// The links of a static model (`is_static`) never move: their inertia is not used (and
+  /// not checked: Gazebo saves static links with mass 0 and nan moments).
+  SdfLinkConverter(std::string where, const UriResolver& resolver, RobotSpec* spec,
+                   bool is_static = false)
+      : where_(std::move(where)), resolver_(resolver), spec_(spec), is_static_(is_static) {}
 
   /// The URDF link of `entry`: inertial (checked), collisions (their friction into
-  /// spec->surfaces), visuals in their material's colour; its sensors are warned about.
+  /// spec->surfaces), visuals in their material's colour; its sensors are kept in sensors().
   /// @throws LoadError for a bad inertia or geometry a movable body cannot have.
   urdf::LinkSharedPtr convert(const LinkEntry& entry);
+
+  /// The <sensor>s of the links converted, each posed in its link, for the sensor readers.
+  const std::vector<SdfSensorText>& sensors() const { return sensors_; }
 
   /// Material script textures of the visuals converted, until the specs of the visuals exist.
   const std::map<const urdf::Visual*, TextureRef>& textures() const { return textures_; }
@@ -43,7 +50,9 @@ class SdfLinkConverter {
   std::string where_;
   const UriResolver& resolver_;
   RobotSpec* spec_;
+  bool is_static_;
   std::map<const urdf::Visual*, TextureRef> textures_;
+  std::vector<SdfSensorText> sensors_;
 };
 
 }  // namespace bullet_sim

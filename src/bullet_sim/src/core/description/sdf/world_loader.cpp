@@ -111,7 +111,8 @@ class WorldReader {
       spec->warnings.push_back(source_ + ": model '" + model.name + "': joint '" + anchor +
                                "' to the world is not fixed: the model is held static");
     }
-    if (model.is_static || anchored) {
+    // A static model with sensors or plugins is a robot held static, so that they work.
+    if ((model.is_static || anchored) && !carriesSensorsOrPlugins(model)) {
       readStaticModel(model, model.name, T_world_model, saved, spec);
       spec->static_models.push_back({model.name, toPose3(T_world_model)});
       return;
