@@ -32,6 +32,11 @@ SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
       state_topics_(sim, queue_, gazebo_nh, model_states_rate_hz),
       paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+  // The world's own models (those that move, or carry sensors) publish in the node's
+  // namespace, as Gazebo's plugins of a world's models do in theirs.
+  for (const std::string& name : sim_.robotNames()) {
+    robots_[name] = std::make_unique<RobotIo>(sim_, queue_, name, nh_, findTfPrefix(nh_));
+  }
 }
 
 void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,
