@@ -135,6 +135,13 @@ class Simulation {
   /// @throws std::invalid_argument for a sensor named twice.
   std::vector<LaserScanData> readRays(const std::vector<DueSensor>& rays);
   ImuData readImu(const std::string& robot, size_t index);
+  /// A libgazebo_ros_range.so sensor's reading, its rays cast now.
+  RangeData readRange(const std::string& robot, size_t index);
+  /// A libgazebo_ros_block_laser.so sensor's points, its rays cast now.
+  BlockLaserCloudData readBlockLaser(const std::string& robot, size_t index);
+  /// What touches a libgazebo_ros_bumper.so sensor's collision, from the last step's
+  /// contacts: a state per other collision, the sensor's as collision 1.
+  ContactsData readBumper(const std::string& robot, size_t index) const;
   OdometryData readOdometry(const std::string& robot);
   JointStateData readJointStates(const std::string& robot) const;  ///< every non-fixed joint
   /// libgazebo_ros_p3d.so plugin `index` (RobotSpec::p3ds): the ground truth of its body,

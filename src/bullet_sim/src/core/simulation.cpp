@@ -98,6 +98,7 @@ void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
     requireLink(*r->physics, name, "camera '" + s.name + "'", s.link);
   }
   equipModelPlugins(name, r);
+  equipContactAndConeSensors(name, r);
   double joint_state_rate_hz = kDefaultJointStateRateHz;
   if (spec.diff_drive) {
     const DiffDriveSpec& d = *spec.diff_drive;

@@ -35,10 +35,17 @@ struct Simulation::Impl {
     double last_command_s = 0;   ///< sim time of the last setCmdVel
     bool command_active = false; ///< a non-zero command the timeout may stop
     bool told_wheel_limit = false;  ///< a command was scaled to the wheel limits and we said so
-    std::vector<std::mt19937_64> ray_rngs, imu_rngs, p3d_rngs;
+    std::vector<std::mt19937_64> ray_rngs, imu_rngs, p3d_rngs, range_rngs,
+        block_laser_rngs;
     /// The last wrench of each libgazebo_ros_force.so plugin (RobotSpec::forces), applied
     /// at every step.
     std::vector<Wrench> plugin_wrenches;
+    /// Each bumper's collision: its body and the index of the collision in that body's plan.
+    struct BumperTarget {
+      size_t body = 0, part = 0;
+      std::string name;  ///< "model::link::collision", as Gazebo scopes it
+    };
+    std::vector<BumperTarget> bumpers;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;
     /// set_link_properties / set_joint_properties changes, put back after a reset().
@@ -60,6 +67,11 @@ struct Simulation::Impl {
   /// The part of equipRobot for the model plugins of gazebo_plugins (p3d, force): checks
   /// the links they name and sets up their state. @throws LoadError naming what is missing.
   void equipModelPlugins(const std::string& name, Robot* r);
+  /// The part of equipRobot for range sensors, block lasers and bumpers.
+  void equipContactAndConeSensors(const std::string& name, Robot* r);
+  /// Gazebo's scoped name ("model::link::collision") of part `part` of `object` (a robot's
+  /// body or a static shape), "" for anything else.
+  std::string collisionName(const btCollisionObject* object, int part) const;
 
   /// Builds robot r's bodies in a home world of its own; physics->attach() them once the
   /// robot is complete.
@@ -86,6 +98,12 @@ struct Simulation::Impl {
       r->p3d_rngs.push_back(sensorRng(cfg.seed, name, "p3d " + s.name + " " + s.topic));
     }
     for (const ImuSpec& s : r->spec.imus) r->imu_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    r->range_rngs.clear();
+    r->block_laser_rngs.clear();
+    for (const RangeSpec& s : r->spec.ranges)
+      r->range_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    for (const BlockLaserSpec& s : r->spec.block_lasers)
+      r->block_laser_rngs.push_back(sensorRng(cfg.seed, name, s.name));
     for (ImuSensor& imu : r->imus) imu.reset();
   }
 

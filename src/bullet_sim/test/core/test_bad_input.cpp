@@ -1,6 +1,7 @@
 // Bad robot descriptions and worlds, one fixture per failure mode: each is a LoadError (or a
 // warning) whose message names the file, the element and the offending value, loaded through
 // the entry points the node uses (parseRobot via parseRobotFile, loadWorldFile).
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -197,7 +198,7 @@ TEST(BadUrdf, SensorWithNegativeUpdateRate) {
 TEST(BadUrdf, NanFrictionNamesLinkAndValue) {
   const RobotError e("urdf_nan_friction.urdf");
   EXPECT_EQ(e.text, e.path + ": <gazebo reference=\"wheel\"> <mu1>: 'nan' is not a friction "
-                             "coefficient >= 0");
+                             "coefficient");
 }
 
 TEST(BadUrdf, CameraWithZeroFieldOfView) {
@@ -250,19 +251,24 @@ TEST(BadWorld, NanFrictionNamesModelLinkCollisionAndValue) {
   EXPECT_EQ(worldErrorOf("world_nan_friction.world"),
             fixture("world_nan_friction.world") +
                 ": model 'floor' link 'link' collision 'collision': "
-                "<surface><friction><ode><mu>: 'nan' is not a friction coefficient >= 0");
+                "<surface><friction><ode><mu>: 'nan' is not a friction coefficient");
 }
 
-TEST(BadWorld, NegativeFrictionNamesModelLinkCollisionAndValue) {
-  const std::string error = loadErrorOf([] {
-    loadWorldString(R"(<sdf version="1.6"><world name="w"><model name="floor">
+// Gazebo's FrictionPyramid::SetMu keeps a negative coefficient as FLT_MAX (gazebo_ros_pkgs'
+// bumper_test.world has <mu>-1</mu>): it loads, as friction without a limit.
+TEST(BadWorld, NegativeFrictionIsUnlimitedAsInGazebo) {
+  const WorldSpec w = loadWorldString(R"(<sdf version="1.6"><world name="w"><model name="floor">
         <static>true</static><link name="link"><collision name="collision"><geometry><box>
-        <size>1 1 1</size></box></geometry><surface><friction><ode><mu>-0.2</mu></ode>
-        </friction></surface></collision></link></model></world></sdf>)",
-                    "w.world");
-  });
-  EXPECT_EQ(error, "w.world: model 'floor' link 'link' collision 'collision': "
-                   "<surface><friction><ode><mu>: '-0.2' is not a friction coefficient >= 0");
+        <size>1 1 1</size></box></geometry><surface><friction><ode><mu>-0.2</mu><mu2>-1</mu2>
+        </ode></friction></surface></collision></link></model></world></sdf>)",
+                                      "w.world");
+  ASSERT_EQ(w.shapes.size(), 1u);
+  EXPECT_EQ(w.shapes[0].friction, static_cast<double>(std::numeric_limits<float>::max()));
+  const RobotSpec urdf = parseRobot(R"(<robot name="r"><link name="a"><inertial><mass value="1"/>
+      <inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+      <gazebo reference="a"><mu1>-1</mu1><mu2>0.5</mu2></gazebo></robot>)", "r.urdf");
+  EXPECT_EQ(urdf.surfaces.at("a").mu1, static_cast<double>(std::numeric_limits<float>::max()));
+  EXPECT_EQ(urdf.surfaces.at("a").mu2, 0.5);
 }
 
 TEST(BadWorld, NanFrictionOfASpawnedSdfModel) {
@@ -272,7 +278,7 @@ TEST(BadWorld, NanFrictionOfASpawnedSdfModel) {
       </collision></link></model></sdf>)";
   const std::string error = loadErrorOf([&] { parseSdfModelString(sdf, "puck"); });
   EXPECT_NE(error.find("link 'body' collision 'base': <surface><friction><ode><mu2>: 'nan' is "
-                       "not a friction coefficient >= 0"),
+                       "not a friction coefficient"),
             std::string::npos)
       << error;
 }

@@ -2,6 +2,7 @@
 #define BULLET_SIM_ROBOT_SPEC_H
 
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -22,6 +23,12 @@ namespace bullet_sim {
 /// The geometry description shared with the renderer (sim_render/geometry.h).
 using Geometry = sim_render::Geometry;
 
+/// A friction coefficient as Gazebo keeps it (FrictionPyramid::SetMu): a negative one
+/// becomes FLT_MAX, friction without a limit (a contact then takes the other surface's).
+inline double frictionCoefficient(double mu) {
+  return mu < 0 ? static_cast<double>(std::numeric_limits<float>::max()) : mu;
+}
+
 /// Gazebo surface parameters of one link (<gazebo reference="link"><mu1>...).
 struct SurfaceParams {
   double mu1 = 1.0, mu2 = 1.0, kp = 1e12, kd = 1.0;
@@ -38,6 +45,45 @@ struct RaySpec {
   double update_rate_hz = 5, min_angle_rad = 0, max_angle_rad = 0, range_min_m = 0.1,
          range_max_m = 10, range_resolution_m = 0, noise_mean_m = 0, noise_stddev_m = 0;
   int samples = 1;
+};
+
+/// The rays of a <sensor type="ray"> as Gazebo's MultiRayShape casts them: `samples`
+/// horizontal angles from min to max (yaw 0 alone when there is one) for each of
+/// `vertical_samples` vertical angles (pitch 0 alone when there is one; up is positive),
+/// each ray from range_min to range_max along the sensor's x axis turned by yaw and pitch.
+struct RayConeSpec {
+  int samples = 1, vertical_samples = 1;
+  double resolution = 1, vertical_resolution = 1;  ///< ranges per ray (<scan> <resolution>)
+  double min_angle_rad = 0, max_angle_rad = 0, vertical_min_angle_rad = 0,
+         vertical_max_angle_rad = 0, range_min_m = 0, range_max_m = 0;
+};
+
+/// A <sensor type="ray"> with libgazebo_ros_range.so: a sensor_msgs/Range of the nearest
+/// of its rays. Defaults are the plugin's.
+struct RangeSpec {
+  std::string name, link, topic = "/range", frame_id = "/world";
+  Pose3 pose_in_link;
+  RayConeSpec rays;
+  double update_rate_hz = 0;  ///< the sensor's <update_rate>, throttled by <updateRate>
+  double gaussian_noise = 0, fov_rad = 0.05;
+  bool infrared = false;  ///< <radiation>: "ultrasound" (the default) or anything else
+};
+
+/// A <sensor type="ray"> with libgazebo_ros_block_laser.so: a sensor_msgs/PointCloud of
+/// every ray's end point. Defaults are the plugin's.
+struct BlockLaserSpec {
+  std::string name, link, topic = "/world", frame_id = "/world";
+  Pose3 pose_in_link;
+  RayConeSpec rays;
+  double update_rate_hz = 0;  ///< the sensor's <update_rate> (the plugin's is not used)
+  double gaussian_noise = 0;
+};
+
+/// A <sensor type="contact"> with libgazebo_ros_bumper.so: the contacts of one collision of
+/// the sensor's link, as gazebo_msgs/ContactsState. Defaults are the plugin's.
+struct BumperSpec {
+  std::string name, link, collision, topic = "bumper_states", frame_id = "world";
+  double update_rate_hz = 0;  ///< the sensor's <update_rate>
 };
 
 /// An IMU: a <sensor type="imu"> or a libgazebo_ros_imu(_sensor).so plugin.
@@ -165,6 +211,9 @@ struct RobotSpec {
   std::vector<RaySpec> rays;
   std::vector<ImuSpec> imus;
   std::vector<CameraSpec> cameras;
+  std::vector<RangeSpec> ranges;
+  std::vector<BlockLaserSpec> block_lasers;
+  std::vector<BumperSpec> bumpers;
   std::optional<DiffDriveSpec> diff_drive;
   std::vector<P3dSpec> p3ds;
   std::vector<ForceSpec> forces;

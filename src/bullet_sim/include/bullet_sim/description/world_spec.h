@@ -16,6 +16,7 @@ namespace bullet_sim {
 /// SDF <uri> as written), where it stands and what it looks like.
 struct StaticShape : Geometry {
   std::string model, link;
+  std::string name;                  ///< the <collision> or <visual> name
   Pose3 pose;                        ///< world pose of the geometry
   /// Mesh only: its triangles (collision: the triangle mesh itself, as the shape is static)
   std::shared_ptr<const TriangleMesh> mesh;

@@ -9,7 +9,9 @@
 
 namespace bullet_sim {
 
-enum class SensorKind { Ray, Imu, Camera, Odometry, JointStates, GroundTruth };
+enum class SensorKind {
+  Ray, Imu, Camera, Odometry, JointStates, GroundTruth, Range, BlockLaser, Bumper
+};
 
 /// A sensor whose update period elapsed; index points into the robot spec's
 /// vector of that kind (0 for Odometry and JointStates).
@@ -27,6 +29,42 @@ struct LaserScanData {
          range_min = 0, range_max = 0;
   std::vector<float> ranges;       ///< +inf where nothing is hit within range_max
   std::vector<float> intensities;
+};
+
+/// One reading of a range sensor, laid out as sensor_msgs/Range.
+struct RangeData {
+  double time_s = 0;
+  std::string frame_id;
+  bool infrared = false;  ///< radiation_type INFRARED (1), else ULTRASOUND (0)
+  float field_of_view = 0, min_range = 0, max_range = 0;
+  float range = 0;  ///< the nearest ray's range (+ noise), max_range when none hits
+};
+
+/// A block laser's points, laid out as sensor_msgs/PointCloud with one channel (its
+/// intensities, unnamed as in Gazebo's plugin).
+struct BlockLaserCloudData {
+  double time_s = 0;
+  std::string frame_id;
+  std::vector<Eigen::Vector3f> points;  ///< in the sensor frame
+  std::vector<float> intensities;       ///< one per point
+};
+
+/// What touches one collision, laid out as gazebo_msgs/ContactState.
+struct ContactStateData {
+  std::string collision1_name, collision2_name;  ///< "model::link::collision"; 1 is the sensor's
+  /// Force (N) and torque (N m, about the body's centre of mass) on collision 1 at each
+  /// point, in the axes of its link, as Gazebo's ODE reports them
+  std::vector<Eigen::Vector3d> forces, torques;
+  Eigen::Vector3d total_force{0, 0, 0}, total_torque{0, 0, 0};
+  std::vector<Eigen::Vector3d> positions, normals;  ///< world frame; normals point into collision 1
+  std::vector<double> depths;
+};
+
+/// A bumper's reading, laid out as gazebo_msgs/ContactsState: a state per touching collision.
+struct ContactsData {
+  double time_s = 0;
+  std::string frame_id;
+  std::vector<ContactStateData> states;
 };
 
 /// One IMU reading, in the IMU (link) frame.

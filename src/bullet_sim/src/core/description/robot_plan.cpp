@@ -93,6 +93,14 @@ class Planner {
                        T_root_inertial.linear() * I * T_root_inertial.linear().transpose()});
   }
 
+  static std::string gazeboCollisionName(const BodyPlan& body, const CollisionPlan& col) {
+    std::string name = (col.name.empty() ? col.link : col.name) + "_collision";
+    if (!body.collisions.empty()) name += "_" + std::to_string(body.collisions.size());
+    const std::string& root = body.root_link;
+    if (name.compare(0, root.size(), root) == 0) return name;
+    return root + "_fixed_joint_lump__" + name;
+  }
+
   void addCollisions(size_t body, const urdf::Link& link, const Eigen::Isometry3d& T_root_link) {
     const auto surface = spec_.surfaces.find(link.name);
     const double friction =
@@ -112,6 +120,9 @@ class Planner {
         }
         col.mesh = mesh->second;
       }
+      col.link = link.name;
+      col.name = c->name;
+      col.gazebo_name = gazeboCollisionName(plan_.bodies[body], col);
       plan_.bodies[body].collisions.push_back(col);
     }
   }

@@ -18,6 +18,12 @@ struct CollisionPlan : Geometry {
   std::shared_ptr<const TriangleMesh> mesh;  ///< Mesh only
   Eigen::Isometry3d T_root_geom = Eigen::Isometry3d::Identity();
   double friction = 1.0;          ///< from the link's mu1/mu2
+  std::string link;               ///< the link it belongs to (merged into the body or not)
+  std::string name;               ///< the <collision name> as written (SDF models' names)
+  /// The name Gazebo gives it when it turns the URDF into SDF (sdformat's parser_urdf):
+  /// "<name or link>_collision", "_<k>" after it for the k-th (k > 0) of its body, and
+  /// "<body root link>_fixed_joint_lump__" before it unless it starts with that link's name.
+  std::string gazebo_name;
 };
 
 /// A rigid body: links joined by fixed joints, merged. Frames are given in the

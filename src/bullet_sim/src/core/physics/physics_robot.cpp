@@ -215,6 +215,16 @@ double PhysicsRobot::staticPenetrationM() const {
   return deepest_m;
 }
 
+std::vector<BodyContact> PhysicsRobot::contacts(size_t body, double dt_s) const {
+  return bodyContacts(*world_->getDispatcher(), bodies_.at(body).rigid.get(), dt_s);
+}
+
+int PhysicsRobot::bodyIndexOf(const btCollisionObject* object) const {
+  for (size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].rigid.get() == object) return static_cast<int>(b);
+  return -1;
+}
+
 bool PhysicsRobot::ownsBody(const btCollisionObject* object) const {
   for (const Body& body : bodies_)
     if (body.rigid.get() == object) return true;

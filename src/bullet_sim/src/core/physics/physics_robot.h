@@ -10,6 +10,7 @@
 #include "bullet_sim/types.h"
 #include "bullet_sim/world/entity_frames.h"
 #include "description/robot_plan.h"
+#include "physics/body_contacts.h"
 
 namespace bullet_sim {
 
@@ -41,6 +42,12 @@ class PhysicsRobot {
   /// How deep (m, >= 0) any body of the robot reaches into a static body (a wall, the
   /// ground), from the contacts of the last collision pass.
   double staticPenetrationM() const;
+
+  /// Where something touches body `body` (an index into plan().bodies), from the last
+  /// step of dt_s; BodyContact::part indexes that body's plan collisions.
+  std::vector<BodyContact> contacts(size_t body, double dt_s) const;
+  /// The index into plan().bodies of the body that is `object`, or -1.
+  int bodyIndexOf(const btCollisionObject* object) const;
 
   const RobotPlan& plan() const { return plan_; }
   /// Index into plan().joints, or -1.

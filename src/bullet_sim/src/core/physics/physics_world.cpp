@@ -90,10 +90,11 @@ bool PhysicsWorld::RobotPairFilter::needBroadphaseCollision(btBroadphaseProxy* a
 }
 
 StaticShapes::StaticShapes(const WorldSpec& spec) {
-  for (const StaticShape& s : spec.shapes) {
+  for (size_t i = 0; i < spec.shapes.size(); ++i) {
+    const StaticShape& s = spec.shapes[i];
     if (!s.collides) continue;
     shapes_.push_back(makeCollisionShape(s, s.mesh.get(), Motion::Static));
-    placed_.push_back({shapes_.back().get(), toBt(toIsometry(s.pose)), s.friction});
+    placed_.push_back({shapes_.back().get(), toBt(toIsometry(s.pose)), s.friction, i});
   }
 }
 
@@ -106,6 +107,7 @@ std::vector<std::unique_ptr<btCollisionObject>> addStaticObjects(const StaticSha
     obj->setWorldTransform(s.pose);
     obj->setFriction(s.friction);
     obj->setUserIndex(-1);
+    obj->setUserIndex2(static_cast<int>(s.shape_index));
     // Bullet recomputes the bounding box of every "active" object each step;
     // static shapes never move.
     obj->setActivationState(ISLAND_SLEEPING);

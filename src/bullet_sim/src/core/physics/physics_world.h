@@ -20,6 +20,7 @@ class StaticShapes {
     btCollisionShape* shape;
     btTransform pose;
     double friction;
+    size_t shape_index;  ///< into WorldSpec::shapes; also the object's Bullet user index 2
   };
   explicit StaticShapes(const WorldSpec& spec);
   const std::vector<Placed>& placed() const { return placed_; }

@@ -63,6 +63,12 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
 
 }  // namespace
 
+double firstHitFraction(btCollisionWorld& world, const btVector3& from, const btVector3& to) {
+  BoxAwareRayCallback hit(from, to);
+  world.rayTest(from, to, hit);
+  return hit.hasHit() ? hit.m_closestHitFraction : 1.0;
+}
+
 bool castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
               const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
               size_t max_listed_parts, bool may_walk) {

@@ -31,6 +31,10 @@ bool castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
               const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
               size_t max_listed_parts = kMaxListedScanParts, bool may_walk = true);
 
+/// Fraction of the ray from -> to at its first hit in `world`, 1 when it hits nothing (a walk
+/// of Bullet's broadphase: not on several threads at once).
+double firstHitFraction(btCollisionWorld& world, const btVector3& from, const btVector3& to);
+
 }  // namespace bullet_sim
 
 #endif  // BULLET_SIM_CORE_RAY_SENSOR_H

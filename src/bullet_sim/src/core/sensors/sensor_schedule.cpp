@@ -50,6 +50,15 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
   for (size_t i = 0; i < spec.p3ds.size(); ++i) {
     entries_.push_back({SensorKind::GroundTruth, i, spec.p3ds[i].update_rate_hz});
   }
+  for (size_t i = 0; i < spec.ranges.size(); ++i) {
+    entries_.push_back({SensorKind::Range, i, spec.ranges[i].update_rate_hz});
+  }
+  for (size_t i = 0; i < spec.block_lasers.size(); ++i) {
+    entries_.push_back({SensorKind::BlockLaser, i, spec.block_lasers[i].update_rate_hz});
+  }
+  for (size_t i = 0; i < spec.bumpers.size(); ++i) {
+    entries_.push_back({SensorKind::Bumper, i, spec.bumpers[i].update_rate_hz});
+  }
   if (spec.diff_drive) {
     drive_rate_hz_ = spec.diff_drive->update_rate_hz;
     entries_.push_back({SensorKind::Odometry, 0, drive_rate_hz_});
@@ -76,7 +85,11 @@ bool SensorSchedule::anyDue(uint64_t k, double dt_s) const {
 
 void SensorSchedule::startAfter(uint64_t spawn_step, double dt_s) {
   for (Entry& e : entries_) {
-    if (e.kind != SensorKind::Ray && e.kind != SensorKind::Camera) continue;
+    // Gazebo's sensors (not the model plugins: IMU, odometry, joint states).
+    if (e.kind == SensorKind::Imu || e.kind == SensorKind::Odometry ||
+        e.kind == SensorKind::JointStates) {
+      continue;
+    }
     if (e.rate_hz <= 0) continue;  // every step anyway
     // The first step whose period ends, counted from step 0.
     uint64_t first = 1;

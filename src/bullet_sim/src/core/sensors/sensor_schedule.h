@@ -37,8 +37,8 @@ class SensorSchedule {
   /// Whether collectDue(k, dt_s, ...) would append anything.
   bool anyDue(uint64_t k, double dt_s) const;
 
-  /// A robot spawned after world step `spawn_step` (the steps already taken): its rays and
-  /// cameras measure first with the next step when the world has run one of their periods
+  /// A robot spawned after world step `spawn_step` (the steps already taken): its rays,
+  /// cameras, range sensors, block lasers and bumpers measure first with the next step when the world has run one of their periods
   /// by then, as Gazebo's sensors do (their last update counts from world time 0), and
   /// every period after that. Sensors of a robot spawned earlier keep world-time phase.
   void startAfter(uint64_t spawn_step, double dt_s);

@@ -35,10 +35,17 @@ SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
   if (state_topics) {
     state_topics_ = std::make_unique<StateTopics>(sim, queue_, gazebo_nh, model_states_rate_hz);
   }
-  // The world's models (its movable ones, and static ones with sensors) are simulated from
-  // the start: their cameras publish in the node's namespace, as a world's plugins do.
+  // The world's own models (those that move, or carry sensors) are simulated from the
+  // start and publish in the node's namespace, as Gazebo's plugins of a world's models do
+  // in theirs: their cameras, and their other sensors and plugins (not their joint
+  // states, which Gazebo publishes only through a plugin).
   const std::string tf_prefix = findTfPrefix(nh_);
-  for (const std::string& name : sim_.robotNames()) cameras_.addRobot(name, nh_, tf_prefix);
+  for (const std::string& name : sim_.robotNames()) {
+    cameras_.addRobot(name, nh_, tf_prefix);
+    if (RobotIo::hasTopics(sim_.robotSpec(name))) {
+      robots_[name] = std::make_unique<RobotIo>(sim_, queue_, name, nh_, tf_prefix, false);
+    }
+  }
 }
 
 void SimRunner::spawn(const std::string& name, const bullet_sim::RobotSpec& spec,

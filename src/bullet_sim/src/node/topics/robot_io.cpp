@@ -1,6 +1,7 @@
 #include "topics/robot_io.h"
 
 #include "topics/conversions.h"
+#include "topics/sensor_conversions.h"
 #include "topics/tf_prefix.h"
 
 #include <nav_msgs/Odometry.h>
@@ -38,8 +39,15 @@ std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
 
 }  // namespace
 
+bool RobotIo::hasTopics(const bullet_sim::RobotSpec& spec) {
+  return !spec.rays.empty() || !spec.imus.empty() || !spec.ranges.empty() ||
+         !spec.block_lasers.empty() || !spec.bumpers.empty() || !spec.p3ds.empty() ||
+         !spec.forces.empty() || spec.diff_drive.has_value();
+}
+
 RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
-                 const ros::NodeHandle& robot_nh, const std::string& tf_prefix)
+                 const ros::NodeHandle& robot_nh, const std::string& tf_prefix,
+                 bool joint_states)
     : sim_(sim), queue_(queue), robot_(robot), tf_prefix_(tf_prefix) {
   ros::NodeHandle nh(robot_nh);
   const bullet_sim::RobotSpec& spec = sim_.robotSpec(robot_);
@@ -48,8 +56,19 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
         CountedPublisher::advertise<sensor_msgs::LaserScan>(nh, ray.topic, kQueueSize));
   for (const bullet_sim::ImuSpec& imu : spec.imus)
     imu_pubs_.push_back(CountedPublisher::advertise<sensor_msgs::Imu>(nh, imu.topic, kQueueSize));
-  joint_state_pub_ =
-      CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
+  for (const bullet_sim::RangeSpec& range : spec.ranges)
+    range_pubs_.push_back(
+        CountedPublisher::advertise<sensor_msgs::Range>(nh, range.topic, kQueueSize));
+  for (const bullet_sim::BlockLaserSpec& laser : spec.block_lasers)
+    block_laser_pubs_.push_back(
+        CountedPublisher::advertise<sensor_msgs::PointCloud>(nh, laser.topic, kQueueSize));
+  for (const bullet_sim::BumperSpec& bumper : spec.bumpers)
+    bumper_pubs_.push_back(
+        CountedPublisher::advertise<gazebo_msgs::ContactsState>(nh, bumper.topic, kQueueSize));
+  if (joint_states) {
+    joint_state_pub_ =
+        CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
+  }
   for (const bullet_sim::P3dSpec& p3d : spec.p3ds)
     ground_truth_pubs_.push_back(
         CountedPublisher::advertise<nav_msgs::Odometry>(nh, p3d.topic, kQueueSize));
@@ -96,6 +115,11 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       break;
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
       break;
+    case bullet_sim::SensorKind::Range:
+    case bullet_sim::SensorKind::BlockLaser:
+    case bullet_sim::SensorKind::Bumper:
+      publishRangeOrContacts(due);
+      break;
   }
 }
 
@@ -137,6 +161,28 @@ void RobotIo::onWrench(size_t index, const geometry_msgs::Wrench::ConstPtr& wren
   w.force_n = Eigen::Vector3d(values[0], values[1], values[2]);
   w.torque_nm = Eigen::Vector3d(values[3], values[4], values[5]);
   sim_.setPluginWrench(robot_, index, w);
+}
+
+void RobotIo::publishRangeOrContacts(const bullet_sim::DueSensor& due) {
+  using Kind = bullet_sim::SensorKind;
+  const std::vector<CountedPublisher>& pubs = due.kind == Kind::Range        ? range_pubs_
+                                              : due.kind == Kind::BlockLaser ? block_laser_pubs_
+                                                                             : bumper_pubs_;
+  if (due.index >= pubs.size() || !pubs[due.index].hasSubscribers()) return;
+  const ros::Publisher& pub = pubs[due.index].publisher();
+  if (due.kind == Kind::Range) {
+    sensor_msgs::Range msg = toMsg(sim_.readRange(robot_, due.index));
+    msg.header.frame_id = resolveFrame(tf_prefix_, msg.header.frame_id);
+    queue_.publish(pub, std::move(msg));
+  } else if (due.kind == Kind::BlockLaser) {
+    sensor_msgs::PointCloud msg = toMsg(sim_.readBlockLaser(robot_, due.index));
+    msg.header.frame_id = resolveFrame(tf_prefix_, msg.header.frame_id);
+    queue_.publish(pub, std::move(msg));
+  } else {
+    gazebo_msgs::ContactsState msg = toMsg(sim_.readBumper(robot_, due.index));
+    msg.header.frame_id = resolveFrame(tf_prefix_, msg.header.frame_id);
+    queue_.publish(pub, std::move(msg));
+  }
 }
 
 void RobotIo::onCmdVel(const geometry_msgs::Twist::ConstPtr& command) {

@@ -15,7 +15,8 @@
 
 namespace bullet_sim_node {
 
-/// Publishes a robot's sensors (scan, imu, odom + tf, joint_states) as they fall due and
+/// Publishes a robot's sensors (scan, imu, odom + tf, joint_states, range, block laser
+/// points, bumper contacts) as they fall due and
 /// feeds its diff-drive commands to the simulation. Topic names come from the robot's
 /// Gazebo tags, resolved in `robot_nh` (the robot's namespace); frame ids (odom, base,
 /// scan, imu) are put under `tf_prefix` as Gazebo's plugins do. A sensor topic nobody
@@ -23,9 +24,15 @@ namespace bullet_sim_node {
 /// leave through `queue`, in the order they are made.
 class RobotIo {
  public:
-  /// `sim` and `queue` must outlive this object.
+  /// `sim` and `queue` must outlive this object. Without `joint_states` the robot's joint
+  /// states are not published (a world's own models: Gazebo publishes theirs only through
+  /// a plugin).
   RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
-          const ros::NodeHandle& robot_nh, const std::string& tf_prefix);
+          const ros::NodeHandle& robot_nh, const std::string& tf_prefix,
+          bool joint_states = true);
+  /// Whether a robot of `spec` has sensors or plugins that RobotIo publishes or subscribes
+  /// besides its joint states.
+  static bool hasTopics(const bullet_sim::RobotSpec& spec);
   RobotIo(const RobotIo&) = delete;
   RobotIo& operator=(const RobotIo&) = delete;
 
@@ -42,6 +49,8 @@ class RobotIo {
   /// A libgazebo_ros_force.so plugin's wrench message (plugin `index` of RobotSpec::forces).
   void onWrench(size_t index, const geometry_msgs::Wrench::ConstPtr& wrench);
   void publishOdometry();
+  /// A range sensor's, block laser's or bumper's reading, if someone subscribes.
+  void publishRangeOrContacts(const bullet_sim::DueSensor& due);
 
   bullet_sim::Simulation& sim_;
   PublishQueue& queue_;
@@ -49,6 +58,9 @@ class RobotIo {
   const std::string tf_prefix_;
   std::vector<CountedPublisher> scan_pubs_;  ///< one per RaySpec, same index
   std::vector<CountedPublisher> imu_pubs_;   ///< one per ImuSpec, same index
+  std::vector<CountedPublisher> range_pubs_;  ///< one per RangeSpec, same index
+  std::vector<CountedPublisher> block_laser_pubs_;  ///< one per BlockLaserSpec, same index
+  std::vector<CountedPublisher> bumper_pubs_;  ///< one per BumperSpec, same index
   CountedPublisher odom_pub_;
   std::vector<CountedPublisher> ground_truth_pubs_;  ///< one per P3dSpec, same index
   std::vector<ros::Subscriber> wrench_subs_;         ///< one per ForceSpec, same index

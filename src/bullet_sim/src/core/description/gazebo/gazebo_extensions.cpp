@@ -11,12 +11,14 @@
 
 #include "bullet_sim/errors.h"
 #include "description/gazebo/body_plugin_reader.h"
+#include "description/gazebo/bumper_reader.h"
 #include "description/gazebo/camera_reader.h"
 #include "description/gazebo/depth_camera_reader.h"
 #include "description/gazebo/diff_drive_reader.h"
 #include "description/gazebo/gazebo_values.h"
 #include "description/gazebo/imu_reader.h"
 #include "description/gazebo/link_extensions.h"
+#include "description/gazebo/multi_ray_reader.h"
 #include "description/gazebo/plugin_parameters.h"
 #include "description/gazebo/ray_reader.h"
 #include "description/gazebo/skid_steer_reader.h"
@@ -34,12 +36,13 @@ struct SensorFamily {
   void (*read)(const SensorElement&, const XmlValues&, RobotSpec*);
 };
 
-/// The sensor family of `type`, or null for a type the simulator does not support.
-const SensorFamily* sensorFamily(const std::string& type) {
+const std::vector<SensorFamily>& sensorFamilies() {
   static const std::vector<std::string> lasers = {"libgazebo_ros_laser.so",
                                                   "libgazebo_ros_gpu_laser.so"};
   static const std::vector<SensorFamily> families = {
       {"ray", lasers, readRaySensor},
+      {"ray", {"libgazebo_ros_range.so"}, readRangeSensor},
+      {"ray", {"libgazebo_ros_block_laser.so"}, readBlockLaserSensor},
       {"gpu_ray", lasers, readRaySensor},
       {"imu", {"libgazebo_ros_imu_sensor.so"}, readImuSensor},
       {"camera", {"libgazebo_ros_camera.so", kTriggeredCameraPlugin}, readCameraSensor},
@@ -47,9 +50,26 @@ const SensorFamily* sensorFamily(const std::string& type) {
        {"libgazebo_ros_multicamera.so", kTriggeredMultiCameraPlugin},
        readMultiCameraSensor},
       {"wideanglecamera", {"libgazebo_ros_camera.so"}, readWideAngleCameraSensor},
-      {"depth", {kKinectPlugin, kDepthCameraPlugin}, readDepthCameraSensor}};
-  for (const SensorFamily& f : families) {
-    if (type == f.type) return &f;
+      {"depth", {kKinectPlugin, kDepthCameraPlugin}, readDepthCameraSensor},
+      {"contact", {"libgazebo_ros_bumper.so"}, readBumperSensor}};
+  return families;
+}
+
+/// Whether the simulator supports sensors of `type` at all.
+bool knownSensorType(const std::string& type) {
+  for (const SensorFamily& f : sensorFamilies()) {
+    if (type == f.type) return true;
+  }
+  return false;
+}
+
+/// The family of `type` whose plugins include `file`, or null.
+const SensorFamily* sensorFamily(const std::string& type, const std::string& file) {
+  for (const SensorFamily& f : sensorFamilies()) {
+    if (type != f.type) continue;
+    if (std::find(f.plugin_files.begin(), f.plugin_files.end(), file) != f.plugin_files.end()) {
+      return &f;
+    }
   }
   return nullptr;
 }
@@ -118,16 +138,13 @@ class ExtensionReader {
     const std::string name = attribute(s, "name");
     const XMLElement* plugin = s->FirstChildElement("plugin");
     const std::string file = plugin ? attribute(plugin, "filename") : "";
-    const SensorFamily* family = sensorFamily(type);
-    if (!family) {
+    if (!knownSensorType(type)) {
       spec_->warnings.push_back("sensor type '" + type + "' (sensor '" + name + "' on link '" +
                                 link + "') is not supported: ignored");
       return;
     }
-    const std::vector<std::string>& files = family->plugin_files;
-    if (std::find(files.begin(), files.end(), file) == files.end()) {
-      return noPlugin(type, name, link, file);
-    }
+    const SensorFamily* family = sensorFamily(type, file);
+    if (!family) return noPlugin(type, name, link, file);
     // Only a plugin that this sensor uses is checked: a left-out one is warned about whole.
     warnUnknownPluginParameters(plugin, file, where + " <plugin>", &spec_->warnings);
     family->read({s, plugin, link, name, where}, xml_, spec_);

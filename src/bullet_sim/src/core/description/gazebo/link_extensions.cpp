@@ -1,5 +1,6 @@
 #include "description/gazebo/link_extensions.h"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -21,11 +22,11 @@ void readLinkSurface(const XMLElement* g, const std::string& link, const XmlValu
   s.mu2 = xml.number(g, "mu2", s.mu2, where);
   s.kp = xml.number(g, "kp", s.kp, where);
   s.kd = xml.number(g, "kd", s.kd, where);
-  for (const auto& [name, mu] : {std::make_pair("mu1", s.mu1), std::make_pair("mu2", s.mu2)}) {
-    if (!(mu >= 0)) {
-      xml.fail(where + " <" + name + ">",
-               "'" + xml.text(g, name, "") + "' is not a friction coefficient >= 0");
+  for (const auto& [name, mu] : {std::make_pair("mu1", &s.mu1), std::make_pair("mu2", &s.mu2)}) {
+    if (std::isnan(*mu)) {
+      xml.fail(where + " <" + name + ">", "'" + xml.text(g, name, "") + "' is not a friction coefficient");
     }
+    *mu = frictionCoefficient(*mu);
   }
   spec->surfaces[link] = s;
 }

@@ -58,7 +58,10 @@ const std::map<std::string, std::vector<std::string>>& knownParameters() {
         {"libgazebo_ros_openni_kinect.so", depth},
         {"libgazebo_ros_depth_camera.so", depth},
         {"libgazebo_ros_imu.so", kImu},
-        {"libgazebo_ros_imu_sensor.so", kImu}};
+        {"libgazebo_ros_imu_sensor.so", kImu},
+        {"libgazebo_ros_range.so", {"topicName", "frameName", "radiation", "fov", "gaussianNoise"}},
+        {"libgazebo_ros_block_laser.so", laser},
+        {"libgazebo_ros_bumper.so", {"bumperTopicName", "frameName"}}};
   }();
   return known;
 }

@@ -1,5 +1,6 @@
 #include "description/sdf/sdf_surface.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "bullet_sim/errors.h"
@@ -10,13 +11,13 @@ namespace {
 void takeCoefficient(const std::optional<double>& value, const char* name,
                      const std::string& where, double* mu) {
   if (!value) return;
-  if (!(*value >= 0)) {
+  if (std::isnan(*value)) {
     std::ostringstream text;
     text << *value;
     throw LoadError(where + ": <surface><friction><ode><" + name + ">: '" + text.str() +
-                    "' is not a friction coefficient >= 0");
+                    "' is not a friction coefficient");
   }
-  *mu = *value;
+  *mu = frictionCoefficient(*value);
 }
 
 }  // namespace

@@ -51,6 +51,7 @@ StaticShape StaticLinkShapes::elementShape(const std::string& model, const SdfLi
   StaticShape s;
   s.model = model;
   s.link = link.name;
+  s.name = name;
   s.pose = toPose3(T_world_element);
   s.collides = collides;
   if (!geometry.shape) {
