@@ -125,6 +125,10 @@ struct RobotSpec {
   /// SDF model the pose of its root link (the canonical link) in the <model> frame. Spawn
   /// and model poses are poses of the model frame, as in Gazebo.
   Pose3 root_link_in_model;
+  /// A static model (an SDF <model> with <static>true</static>, spawned): every link is one
+  /// immovable Bullet body (mass 0) that robots collide with and rays and cameras see; its
+  /// joints are held fixed.
+  bool is_static = false;
   /// Unsupported plugins/sensors, links with collision but no inertial, ...
   std::vector<std::string> warnings;
 };

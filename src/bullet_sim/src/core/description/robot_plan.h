@@ -48,6 +48,7 @@ struct RobotPlan {
   std::map<std::string, size_t> body_of_link;
   std::map<std::string, Eigen::Isometry3d> T_model_link;  ///< link poses at zero joint angles
   std::vector<std::string> warnings;
+  bool is_static = false;  ///< one body of mass 0 (RobotSpec::is_static)
 };
 
 /// Groups a URDF's links into bodies, combines their mass and inertia, and

@@ -118,7 +118,10 @@ class SdfModelConverter {
 
 RobotSpec parseSdfModel(const SdfModel& model, const std::string& source,
                         const UriResolver& resolver) {
-  return SdfModelConverter(model, source, resolver).convert();
+  RobotSpec spec = SdfModelConverter(model, source, resolver).convert();
+  // Only spawned models come here static (a world file's static models are static shapes).
+  spec.is_static = model.is_static;
+  return spec;
 }
 
 bool isAnchoredToWorld(const SdfModel& model, std::string* joint_name, bool* fixed) {
