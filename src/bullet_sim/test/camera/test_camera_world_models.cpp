@@ -72,3 +72,34 @@ TEST(CameraWorldModels, MaterialScriptsAndMovableModelsAreDrawnInTheirColours) {
   EXPECT_NEAR(grey.x(), grey.y(), 2) << grey.transpose();
   EXPECT_NEAR(grey.x(), grey.z(), 2) << grey.transpose();
 }
+
+TEST(CameraWorldModels, ASpawnedStaticModelIsDrawnInItsColourUntilDeleted) {
+  // The static Gazebo/Red block (its <model> is the world file's, spawned alone) 1 m ahead.
+  Simulation sim(loadWorldString("<sdf version='1.6'><world name='w'><include>"
+                                 "<uri>model://sun</uri></include><include>"
+                                 "<uri>model://ground_plane</uri></include></world></sdf>",
+                                 "w", UriResolver(ResourcePaths{})),
+                 SimConfig());
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  const RobotSpec spec =
+      parseSdfModelString("<sdf version='1.6'>" + block("sign", true, 0, 0, "Gazebo/Red") +
+                              "</sdf>",
+                          "spawn_sdf_model", UriResolver(ResourcePaths{}));
+  ASSERT_TRUE(spec.is_static);
+  Pose3 at;
+  at.position = Eigen::Vector3d(1.0, 0.0, 0.1);
+  sim.spawnRobot("sign", spec, at);
+  for (int i = 0; i < 300; ++i) sim.step();
+  EXPECT_TRUE(sim.modelPose("sign").position.isApprox(at.position, 1e-12));
+  CameraRenderer renderer(sim);
+  ImageData image;
+  renderer.render("burger", 0, &image);
+  const Eigen::Vector3i red = rgbAt(image, pixelOf(0.9, 0.0, 0.12));
+  EXPECT_GT(red.x(), 60) << red.transpose();
+  EXPECT_LT(red.y(), red.x() / 4) << red.transpose();
+  EXPECT_LT(red.z(), red.x() / 4) << red.transpose();
+  ASSERT_TRUE(sim.deleteRobot("sign"));
+  renderer.render("burger", 0, &image);
+  const Eigen::Vector3i after = rgbAt(image, pixelOf(0.9, 0.0, 0.12));
+  EXPECT_LT(std::abs(after.x() - after.y()), 10) << after.transpose();  // the grey ground
+}

@@ -2,9 +2,12 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
+#include "bullet_sim/description/robot_spec.h"
+#include "bullet_sim/errors.h"
 #include "bullet_sim/simulation.h"
 #include "burger.h"
 #include "round_track.h"
@@ -208,4 +211,60 @@ TEST(SensorPhase, AResetWorldCountsFromZeroAgain) {
   sim.step();
   sim.reset();
   EXPECT_EQ(dueSteps(&sim, 1, 450)[SensorKind::Ray], (std::vector<int>{200, 400}));
+}
+
+namespace {
+
+/// A static SDF model (no inertial: none is needed) of one box `size` centred at `centre`.
+std::string staticBox(const std::string& size, const std::string& centre) {
+  return "<sdf version='1.6'><model name='wall'><static>true</static><pose>" + centre +
+         " 0 0 0</pose><link name='link'><collision name='c'><geometry><box><size>" + size +
+         "</size></box></geometry></collision><visual name='v'><geometry><box><size>" + size +
+         "</size></box></geometry></visual></link></model></sdf>";
+}
+
+}  // namespace
+
+TEST(StaticModels, ASpawnedStaticBoxIsSeenByTheLidarStopsTheRobotAndGoesWhenDeleted) {
+  // A static box 0.2 m deep, 0.6 m wide, 0.5 m tall, centred 1 m ahead of the Burger: its
+  // front face is at x 0.9, which the lidar (0.032 m behind the Burger's centre) reads at
+  // 0.9 + 0.032 m. It has no inertial and floats at z 0.25 (static models do not fall).
+  const RobotSpec spec = parseSdfModelString(staticBox("0.2 0.6 0.5", "1 0 0.25"),
+                                             "spawn_sdf_model", UriResolver(ResourcePaths{}));
+  EXPECT_TRUE(spec.is_static);
+  Simulation sim(bullet_sim_test::flatWorld(), SimConfig());
+  sim.spawnRobot("burger", bullet_sim_test::burgerSpec(), Pose3());
+  Pose3 at;
+  at.position = Eigen::Vector3d(1, 0, 0.25);
+  sim.spawnRobot("wall", spec, at);
+  run(&sim, 300);
+  EXPECT_NEAR(sim.readRay("burger", 0).ranges[0], 0.9 + 0.032, 0.01);
+  EXPECT_TRUE(sim.modelPose("wall").position.isApprox(at.position, 1e-12));
+  // Driven at it at 0.2 m/s for 8 s (1.6 m), the Burger stops at the face: its chassis
+  // (the front of its 0.14 m base plate, 0.038 m ahead of its centre) against x 0.9, and the
+  // wall does not budge.
+  sim.setCmdVel("burger", 0.2, 0);
+  run(&sim, 8000);
+  const double x = sim.modelPose("burger").position.x();
+  EXPECT_LT(x, 0.9 - 0.03);
+  EXPECT_GT(x, 0.9 - 0.12);
+  EXPECT_TRUE(sim.modelPose("wall").position.isApprox(at.position, 1e-12));
+  EXPECT_NEAR(sim.modelPose("wall").orientation.angularDistance(Eigen::Quaterniond::Identity()),
+              0, 1e-12);
+  sim.setCmdVel("burger", 0, 0);
+  EXPECT_TRUE(sim.deleteRobot("wall"));
+  run(&sim, 300);
+  EXPECT_TRUE(std::isinf(sim.readRay("burger", 0).ranges[0]));
+}
+
+TEST(StaticModels, AStaticModelWithABadBoxSizeIsRefusedNamingTheElement) {
+  try {
+    parseSdfModelString(staticBox("0.2 nan 0.5", "1 0 0.25"), "spawn_sdf_model",
+                        UriResolver(ResourcePaths{}));
+    FAIL() << "a box of size '0.2 nan 0.5' was accepted";
+  } catch (const LoadError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("size"), std::string::npos) << what;
+    EXPECT_NE(what.find("nan"), std::string::npos) << what;
+  }
 }

@@ -116,7 +116,10 @@ class GazeboApi(unittest.TestCase):
                    "")
         self.fails("spawn_urdf_model", "initial_pose position.z", "d", BOX_URDF, "",
                    yaw_pose(0, 0, NAN), "")
-        self.fails("spawn_sdf_model", "is <static>", "d", SDF_STATIC_BOX, "", Pose(), "")
+        bad_static = SDF_STATIC_BOX.replace("<size>0.2 0.2 0.2</size>",
+                                            "<size>0.2 nan 0.2</size>")
+        response = self.fails("spawn_sdf_model", "0.2 nan 0.2", "d", bad_static, "", Pose(), "")
+        self.assertIn("size", response.status_message)
         self.fails("spawn_sdf_model", "neither URDF", "d", "<sdf version='1.6'><model", "",
                    Pose(), "")
         negative_radius = ("<sdf version='1.6'><model name='ball'><link name='body'><collision "
@@ -146,6 +149,18 @@ class GazeboApi(unittest.TestCase):
         link = self.ok("get_link_state", "d::body", "").link_state.pose.position
         self.assertAlmostEqual(link.z, 0.1, places=6)
         self.assertEqual(self.ok("get_model_properties", "d").body_names, ["body"])
+
+    def test_spawn_static_sdf_model(self):
+        # A static model is spawned where it is put, listed, says it is static, and goes
+        # with delete_model.
+        self.ok("spawn_sdf_model", "s", SDF_STATIC_BOX, "", yaw_pose(2, -3, 0, 0.5), "")
+        p = self.ok("get_model_state", "s", "").pose
+        self.assertPose(p, 2, -3, 0, 0.5)
+        self.assertTrue(self.ok("get_model_properties", "s").is_static)
+        self.assertIn("s", self.ok("get_world_properties").model_names)
+        self.ok("delete_model", "s")
+        self.assertNotIn("s", self.ok("get_world_properties").model_names)
+        self.fails("get_model_state", "'s'", "s", "")
 
     def test_delete_model(self):
         self.spawn_boxes()

@@ -224,9 +224,10 @@ struct RobotSpec {
   /// SDF model the pose of its root link (the canonical link) in the <model> frame. Spawn
   /// and model poses are poses of the model frame, as in Gazebo.
   Pose3 root_link_in_model;
-  /// A <static> SDF model (or one anchored to the world) with sensors or plugins: every link
-  /// is fixed to the root link, and the robot stays where it is put (its bodies are
-  /// static, as Gazebo's static models are; set_model_state still moves it).
+  /// A static model: a <static> SDF model (spawned, or in a world file with sensors or
+  /// plugins) or one anchored to the world. Every link is fixed to the root link, and the
+  /// robot is immovable Bullet bodies (mass 0) that robots collide with and rays and
+  /// cameras see; it stays where it is put (set_model_state still moves it).
   bool is_static = false;
   /// Unsupported plugins/sensors, links with collision but no inertial, ...
   std::vector<std::string> warnings;

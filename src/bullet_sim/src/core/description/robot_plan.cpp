@@ -32,8 +32,12 @@ class Planner {
   RobotPlan plan() {
     const urdf::LinkConstSharedPtr root = spec_.urdf->getRoot();
     addBody(*root, Eigen::Isometry3d::Identity());
-    for (BodyPlan& body : plan_.bodies) finishMass(&body);
+    // A static model is one Bullet static body: mass 0, no inertia, its frame that of
+    // the root link (its inertials, if any, do not matter).
     plan_.is_static = spec_.is_static;
+    if (!spec_.is_static) {
+      for (BodyPlan& body : plan_.bodies) finishMass(&body);
+    }
     std::sort(plan_.joints.begin(), plan_.joints.end(),
               [](const JointPlan& a, const JointPlan& b) { return a.name < b.name; });
     return std::move(plan_);
@@ -59,7 +63,7 @@ class Planner {
     for (const urdf::LinkSharedPtr& child : link.child_links) {
       const urdf::Joint& joint = *child->parent_joint;
       const Eigen::Isometry3d T_link_child = urdfPose(joint.parent_to_joint_origin_transform);
-      if (isHinge(joint)) {
+      if (isHinge(joint) && !spec_.is_static) {
         JointPlan j;
         j.name = joint.name;
         j.parent_body = body;
@@ -73,7 +77,7 @@ class Planner {
         j.child_body = addBody(*child, T_model_link * T_link_child);
         plan_.joints.push_back(j);
       } else {
-        if (joint.type != urdf::Joint::FIXED) {
+        if (joint.type != urdf::Joint::FIXED && !spec_.is_static) {
           plan_.warnings.push_back("joint '" + joint.name +
                                    "': type not supported (revolute, continuous, fixed are): "
                                    "held fixed");

@@ -39,19 +39,6 @@ ModelFormat formatOf(const std::string& xml, std::string* why) {
   return ModelFormat::Unknown;
 }
 
-/// Whether an SDF document's <model> says <static>true</static>.
-bool isStaticSdf(const std::string& xml) {
-  tinyxml2::XMLDocument doc;
-  doc.Parse(xml.c_str(), xml.size());
-  const tinyxml2::XMLElement* model =
-      doc.RootElement() ? doc.RootElement()->FirstChildElement("model") : nullptr;
-  const tinyxml2::XMLElement* is_static = model ? model->FirstChildElement("static") : nullptr;
-  std::string text = is_static && is_static->GetText() ? is_static->GetText() : "";
-  text.erase(0, text.find_first_not_of(" \t\n\r"));
-  text.erase(text.find_last_not_of(" \t\n\r") + 1);
-  return text == "true" || text == "1";
-}
-
 std::string inQuotes(const std::string& s) { return "'" + s + "'"; }
 
 /// The static world model of that name, if there is one.
@@ -114,11 +101,6 @@ std::string ModelServices::spawnModel(const gazebo_msgs::SpawnModel::Request& re
   if (format == ModelFormat::Unknown) {
     return "model_xml of " + inQuotes(req.model_name) +
            " is neither URDF (<robot>) nor SDF (<sdf>): " + why;
-  }
-  if (format == ModelFormat::Sdf && isStaticSdf(req.model_xml)) {
-    return "model " + inQuotes(req.model_name) +
-           " is <static>: static models can only be part of the world file here (spawned "
-           "models move)";
   }
   try {
     const bullet_sim::RobotSpec spec =
@@ -246,7 +228,7 @@ bool ModelServices::getProperties(gazebo_msgs::GetModelProperties::Request& req,
   res.body_names = sim.linkNames(req.model_name);
   res.geom_names = bullet_sim::collisionNames(sim.robotSpec(req.model_name));
   res.joint_names = sim.jointNames(req.model_name);
-  res.is_static = false;
+  res.is_static = sim.robotSpec(req.model_name).is_static;
   res.success = true;
   res.status_message = "GetModelProperties: got properties";
   return true;
