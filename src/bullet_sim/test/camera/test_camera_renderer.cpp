@@ -282,13 +282,17 @@ TEST(CameraFormats, EncodingsAndValidation) {
   EXPECT_EQ(bullet_sim::imageEncoding(camera), "bgr8");
   camera.format = "L8";
   EXPECT_EQ(bullet_sim::imageEncoding(camera), "mono8");
+  camera.format = "R16G16B16";
+  EXPECT_EQ(bullet_sim::imageEncoding(camera), "rgb16");
   camera.format = "L16";
+  EXPECT_EQ(bullet_sim::imageEncoding(camera), "mono16");
+  camera.format = "BAYER_RGGB8";
   try {
     bullet_sim::validateCamera(camera);
-    FAIL() << "L16 accepted";
+    FAIL() << "BAYER_RGGB8 accepted";
   } catch (const bullet_sim::LoadError& e) {
     EXPECT_NE(std::string(e.what()).find("camera 'cam' on link 'head'"), std::string::npos);
-    EXPECT_NE(std::string(e.what()).find("'L16'"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("'BAYER_RGGB8'"), std::string::npos);
   }
   camera.format = "R8G8B8";
   camera.width = 0;
