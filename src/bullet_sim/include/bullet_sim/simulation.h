@@ -134,6 +134,13 @@ class Simulation {
   /// each the same as readRay() would read it, in the order given.
   /// @throws std::invalid_argument for a sensor named twice.
   std::vector<LaserScanData> readRays(const std::vector<DueSensor>& rays);
+  /// Casts the segments from[i] -> to[i] through the world's static shapes and every
+  /// robot's collisions as they are now (what the ray sensors see), returning for each the
+  /// distance from from[i] to the first hit, +inf where the segment hits nothing. For
+  /// queries beside the sensors: free space, line of sight.
+  /// @throws std::invalid_argument for lists of different lengths or a non-finite point.
+  std::vector<double> castRays(const std::vector<Eigen::Vector3d>& from,
+                               const std::vector<Eigen::Vector3d>& to);
   ImuData readImu(const std::string& robot, size_t index);
   /// A libgazebo_ros_range.so sensor's reading, its rays cast now.
   RangeData readRange(const std::string& robot, size_t index);

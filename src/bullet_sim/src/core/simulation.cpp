@@ -11,6 +11,7 @@
 
 #include "bullet_sim/errors.h"
 #include "description/robot_plan.h"
+#include "physics/bullet_convert.h"
 #include "sensors/ray_sensor.h"
 #include "simulation_impl.h"
 
@@ -383,6 +384,29 @@ std::vector<LaserScanData> Simulation::readRays(const std::vector<DueSensor>& ra
     castScan(impl_->physics->rayWorld(), c.T_world_sensor, *c.spec, c.rng, &scans[i]);
   }
   return scans;
+}
+
+std::vector<double> Simulation::castRays(const std::vector<Eigen::Vector3d>& from,
+                                         const std::vector<Eigen::Vector3d>& to) {
+  if (from.size() != to.size()) {
+    throw std::invalid_argument("castRays: " + std::to_string(from.size()) + " start points and " +
+                                std::to_string(to.size()) + " end points");
+  }
+  for (size_t i = 0; i < from.size(); ++i) {
+    if (!from[i].allFinite() || !to[i].allFinite()) {
+      throw std::invalid_argument("castRays: ray " + std::to_string(i) +
+                                  " has a coordinate that is not a finite number");
+    }
+  }
+  btCollisionWorld& scene = impl_->physics->rayWorld();
+  std::vector<double> distances(from.size(), std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < from.size(); ++i) {
+    const double length = (to[i] - from[i]).norm();
+    if (length <= 0) continue;
+    const double fraction = firstHitFraction(scene, toBt(from[i]), toBt(to[i]));
+    if (fraction < 1.0) distances[i] = fraction * length;
+  }
+  return distances;
 }
 
 ImuData Simulation::readImu(const std::string& robot, size_t index) {
