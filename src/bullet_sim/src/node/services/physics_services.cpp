@@ -64,6 +64,7 @@ PhysicsServices::PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::Nod
   };
   if (step_service) {
     servers_.push_back(nh.advertiseService("step_simulation", &PhysicsServices::step, this));
+    servers_.push_back(nh.advertiseService("step_control", &PhysicsServices::stepControl, this));
   }
 }
 
@@ -96,14 +97,35 @@ bool PhysicsServices::step(bullet_sim::StepSimulation::Request& req,
   if (!runner_.paused()) {
     res.status_message = "physics is running: call pause_physics before stepping";
   } else {
-    for (uint32_t done = 0; done < req.steps;) done += runner_.step(req.steps - done);
-    runner_.publishClock();
-    runner_.flushMessages();  // the caller may count them once the call returns
+    advance(req.steps);
     res.success = true;
     res.status_message = "stepped " + std::to_string(req.steps) + " steps";
   }
   res.sim_time.fromSec(runner_.sim().timeS());
   return true;
+}
+
+bool PhysicsServices::stepControl(gazebo_msgs::StepControl::Request& req,
+                                  gazebo_msgs::StepControl::Response& res) {
+  // As the request proposes: 0 resumes the physics, n >= 1 pauses it (if it runs) and
+  // takes n steps; the reply comes once they are done, not when they are asked for.
+  if (req.steps == 0) {
+    runner_.setPaused(false);
+    res.status_message = "StepControl: 0 steps: physics unpaused";
+  } else {
+    runner_.setPaused(true);
+    advance(req.steps);
+    res.status_message = "StepControl: " + std::to_string(req.steps) +
+                         " steps taken, paused at sim time " + std::to_string(runner_.sim().timeS());
+  }
+  res.success = true;
+  return true;
+}
+
+void PhysicsServices::advance(uint32_t steps) {
+  for (uint32_t done = 0; done < steps;) done += runner_.step(steps - done);
+  runner_.publishClock();
+  runner_.flushMessages();  // the caller may count them once the call returns
 }
 
 bool PhysicsServices::getPhysics(gazebo_msgs::GetPhysicsProperties::Request&,

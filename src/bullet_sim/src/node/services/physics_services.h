@@ -7,6 +7,7 @@
 #include <bullet_sim/StepSimulation.h>
 #include <gazebo_msgs/GetPhysicsProperties.h>
 #include <gazebo_msgs/SetPhysicsProperties.h>
+#include <gazebo_msgs/StepControl.h>
 #include <ros/node_handle.h>
 #include <std_srvs/Empty.h>
 
@@ -17,11 +18,13 @@
 namespace bullet_sim_node {
 
 /// pause_physics, unpause_physics, reset_simulation, reset_world, step_simulation,
-/// get_physics_properties and set_physics_properties, advertised in `gazebo_nh`.
+/// step_control, get_physics_properties and set_physics_properties, advertised in
+/// `gazebo_nh`.
 /// The real-time factor is Gazebo's max_update_rate * time_step (0: as fast as possible).
 class PhysicsServices {
  public:
-  /// With `step_service`, also step_simulation (ours: not in gazebo_ros's API).
+  /// With `step_service`, also step_simulation (ours) and step_control (gazebo_ros_pkgs
+  /// pull request 1280's): neither is in gazebo_ros's API.
   PhysicsServices(SimRunner& runner, Pacer& pacer, const ros::NodeHandle& gazebo_nh,
                   bool step_service);
 
@@ -39,6 +42,11 @@ class PhysicsServices {
   bool resetSimulation(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool resetWorld(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool step(bullet_sim::StepSimulation::Request& req, bullet_sim::StepSimulation::Response& res);
+  bool stepControl(gazebo_msgs::StepControl::Request& req,
+                   gazebo_msgs::StepControl::Response& res);
+  /// Takes exactly `steps` physics steps, publishing every sensor that falls due on the
+  /// way stamped with its sim time, and returns once all of it is handed to roscpp.
+  void advance(uint32_t steps);
   bool getPhysics(gazebo_msgs::GetPhysicsProperties::Request&,
                   gazebo_msgs::GetPhysicsProperties::Response& res);
   bool setPhysics(gazebo_msgs::SetPhysicsProperties::Request& req,
