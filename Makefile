@@ -14,7 +14,7 @@ CATKIN_MAKE := catkin_make --source . --build build \
 	-DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_WHITELIST_PACKAGES="" \
 	-DCATKIN_BLACKLIST_PACKAGES="$(CATKIN_BLACKLIST_PACKAGES)"
 
-.PHONY: all setup build run test screenshots bench clean
+.PHONY: all setup build run test screenshots bench learning clean
 
 all: build
 
@@ -36,6 +36,10 @@ screenshots: build
 # bullet_sim against MuJoCo and PyBullet (installed into build/bench_venv), one table.
 bench: build
 	@bench/compare
+
+# torch, Stable-Baselines3 and Ray into build/learning_venv (large: never in `make setup`).
+learning: build
+	@scripts/setup.sh --learning
 
 clean:
 	rm -rf build devel

@@ -3,7 +3,8 @@
 # deps/apt-packages.txt, those of deps/apt-packages-optional.txt that the release
 # packages (Debian 12 and 13 differ), and PyPI packages in deps/pip-requirements.txt (for
 # Debian's /usr/bin/python3, which the ROS Python modules need). A second run
-# only checks and exits. --bench also makes the benchmark's virtual environment.
+# only checks and exits. --bench also makes the benchmark's virtual environment, --learning
+# the learning one (deps/pip-learning.txt: torch, Stable-Baselines3, Ray).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -59,6 +60,7 @@ for line in open(sys.argv[1]):
     if not req:
         continue
     name, _, version = req.partition('==')
+    name = name.split('[', 1)[0]  # extras: the distribution's own version
     try:
         if version and metadata.version(name) != version:
             missing.append(req)
@@ -88,5 +90,24 @@ if [[ "${1:-}" == "--bench" ]]; then
     "$venv/bin/python" -m pip install -q --disable-pip-version-check $pip_missing
   else
     echo "setup: PyPI packages of deps/pip-bench.txt present in $venv"
+  fi
+fi
+
+# --learning: torch, Stable-Baselines3 and Ray (deps/pip-learning.txt) for training and
+# batch runs on the Python module, into build/learning_venv. It sees the system's packages
+# (Debian's NumPy, which the module was built against, and gymnasium); they are large
+# (torch brings CUDA's libraries from PyPI), so never part of `make setup`.
+if [[ "${1:-}" == "--learning" ]]; then
+  venv=build/learning_venv
+  [[ -x "$venv/bin/python" ]] || {
+    echo "setup: creating $venv"; mkdir -p build
+    /usr/bin/python3 -m venv --system-site-packages "$venv"; }
+  pip_missing=$(pip_check "$venv/bin/python" deps/pip-learning.txt)
+  if [[ -n "$pip_missing" ]]; then
+    echo "setup: installing into $venv: $pip_missing"
+    "$venv/bin/python" -m pip install -q --disable-pip-version-check \
+      -c deps/pip-learning-constraints.txt $pip_missing
+  else
+    echo "setup: PyPI packages of deps/pip-learning.txt present in $venv"
   fi
 fi
