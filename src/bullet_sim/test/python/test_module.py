@@ -5,6 +5,7 @@ import os
 import subprocess
 import sys
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -278,3 +279,28 @@ def test_import_needs_only_the_devel_setup_and_no_ros():
     maps = '\n'.join(lines[2:])
     assert '_core.' in maps
     assert 'libroscpp' not in maps and 'librosconsole' not in maps
+
+
+def test_stepping_releases_the_gil(make_sim):
+    """While one thread is inside a long step(), the main thread keeps running Python: the
+    longest pause between its loop's turns stays well below the call's length (a call that
+    held the GIL would stop it for all of the call)."""
+    sim = make_sim(threads=1)
+    call = []
+
+    def step():
+        start = time.perf_counter()
+        sim.step(20000)
+        call.append(time.perf_counter() - start)
+    worker = threading.Thread(target=step)
+    longest = 0.0
+    last = time.perf_counter()
+    worker.start()
+    while worker.is_alive():
+        now = time.perf_counter()
+        longest = max(longest, now - last)
+        last = now
+    longest = max(longest, time.perf_counter() - last)
+    worker.join()
+    assert sim.time == pytest.approx(20.0, abs=1e-9)
+    assert longest < 0.5 * call[0], (longest, call[0])
