@@ -5,7 +5,8 @@ circle, its lidar cut to 24 rays and read every 0.2 s of sim (200 physics steps 
     source devel/setup.bash
     python3 src/bullet_sim/bench/python_api.py [--seconds 60] [--threads 1] [--parallel 2]
 
-Prints physics steps per second of wall time (and the real-time factor) three ways: 200
+Prints physics steps per second of wall time (the real-time factor, and steps per second
+of the process's CPU time, which other load on the machine changes less) three ways: 200
 steps per call (step(200)), one step per call (step() 200 times: the cost of a call), and
 with --parallel N, N simulations stepped by N Python threads at once (the GIL is released
 while stepping), their steps summed.
@@ -80,13 +81,15 @@ def main():
 
     for per_call, label in ((STEPS_PER_READ, 'step(200)'), (1, 'step() x 200')):
         sim = make_sim(world, robot, args.threads)
-        start = time.perf_counter()
+        start, start_cpu = time.perf_counter(), time.process_time()
         _, rays = run(sim, reads, per_call)
         wall = time.perf_counter() - start
+        cpu = time.process_time() - start_cpu
         pose = sim.model_pose('burger')
-        print('%-13s %d steps, %d scans of %d rays: %.0f steps/s, real-time factor %.1f '
-              '(robot at x %.2f y %.2f)' % (label, steps, reads, rays, steps / wall,
-                                             steps * 0.001 / wall, pose.x, pose.y))
+        print('%-13s %d steps, %d scans of %d rays: %.0f steps/s, real-time factor %.1f; '
+              '%.0f steps per CPU second (robot at x %.2f y %.2f)'
+              % (label, steps, reads, rays, steps / wall, steps * 0.001 / wall, steps / cpu,
+                 pose.x, pose.y))
 
     if args.parallel > 0:
         sims = [make_sim(world, robot, args.threads, seed=i + 1) for i in range(args.parallel)]
