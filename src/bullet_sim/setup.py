@@ -6,4 +6,4 @@ from setuptools import setup
 setup(**generate_distutils_setup(
     packages=['bullet_sim'],
     package_dir={'': 'python'},
-    package_data={'bullet_sim': ['py.typed', '_core.pyi']}))
+    package_data={'bullet_sim': ['py.typed', '*.pyi']}))

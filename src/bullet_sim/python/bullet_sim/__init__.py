@@ -13,26 +13,25 @@ Nothing here imports ROS; the core library links no ROS library. Errors: LoadErr
 description that cannot be loaded), NotFoundError (a KeyError and an IndexError: unknown
 robot, sensor index, link or joint), ValueError (a bad argument). Methods release the GIL:
 step separate Simulations from separate threads to run them in parallel.
-"""
 
-from bullet_sim._core import (  # noqa: F401
-    Condition,
-    DueSensor,
-    Imu,
-    JointStates,
-    LoadError,
-    NotFoundError,
-    Odometry,
-    Pose,
-    Robot,
-    Scan,
-    SensorKind,
-    Simulation,
-    Twist,
-    World,
-)
+Importing bullet_sim loads nothing compiled: the module's names come from bullet_sim._core on
+first use, so that ROS clients of the generated bullet_sim.srv never load the core.
+"""
 
 __all__ = [
     'Condition', 'DueSensor', 'Imu', 'JointStates', 'LoadError', 'NotFoundError', 'Odometry',
     'Pose', 'Robot', 'Scan', 'SensorKind', 'Simulation', 'Twist', 'World',
 ]
+
+
+def __getattr__(name):
+    if name in __all__:
+        from bullet_sim import _core
+        value = getattr(_core, name)
+        globals()[name] = value
+        return value
+    raise AttributeError('module %r has no attribute %r' % (__name__, name))
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -256,9 +256,11 @@ def test_two_threads_step_two_simulations_as_sequentially(make_sim):
 
 def test_import_needs_only_the_devel_setup_and_no_ros():
     """`import bullet_sim` in a fresh shell that only sourced devel/setup.bash, no master
-    (ROS_MASTER_URI pointing nowhere), and no ROS library loaded by the module."""
+    (ROS_MASTER_URI pointing nowhere), and no ROS library loaded by the module; the import
+    itself loads nothing compiled (clients of bullet_sim.srv import the same package)."""
     setup = os.path.join(WORKSPACE, 'devel', 'setup.bash')
     script = ('import sys, bullet_sim\n'
+              'assert "bullet_sim._core" not in sys.modules  # loaded on first use\n'
               'world = bullet_sim.World.from_string("<sdf version=\'1.6\'><world name=\'w\'>'
               '</world></sdf>")\n'
               'sim = bullet_sim.Simulation(world)\n'
