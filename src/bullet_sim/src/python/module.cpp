@@ -406,6 +406,9 @@ PYBIND11_MODULE(_core, m) {
       .def("__eq__", [](const DueSensor& a, const DueSensor& b) {
         return a.robot == b.robot && a.kind == b.kind && a.index == b.index;
       })
+      .def("__hash__", [](const DueSensor& d) {
+        return py::hash(py::make_tuple(d.robot, static_cast<int>(d.kind), d.index));
+      })
       .def("__repr__", [](const DueSensor& d) {
         return "DueSensor(robot='" + d.robot + "', kind=" + kindName(d.kind) +
                ", index=" + std::to_string(d.index) + ")";

@@ -124,6 +124,7 @@ def test_step_to_next_reading_stops_at_the_due_sensor(make_sim):
     due = sim.step_to_next_reading(1000)
     assert sim.time == pytest.approx(0.005, abs=1e-9)
     assert [(d.robot, d.kind, d.index) for d in due] == [('burger', bullet_sim.SensorKind.IMU, 0)]
+    assert len({due[0], sim.step_to_next_reading(1000)[0]}) == 1  # equal and hashable
     # The lidar (5 Hz) at 0.2 s, among the IMU's readings.
     for _ in range(100):
         due = sim.step_to_next_reading(1000)
