@@ -79,6 +79,7 @@ def main():
     reads = max(1, int(round(args.seconds / (STEPS_PER_READ * 0.001))))
     steps = reads * STEPS_PER_READ
 
+    run(make_sim(world, robot, args.threads), 25, STEPS_PER_READ)  # warm-up: 5 s of sim
     for per_call, label in ((STEPS_PER_READ, 'step(200)'), (1, 'step() x 200')):
         sim = make_sim(world, robot, args.threads)
         start, start_cpu = time.perf_counter(), time.process_time()
@@ -94,14 +95,16 @@ def main():
     if args.parallel > 0:
         sims = [make_sim(world, robot, args.threads, seed=i + 1) for i in range(args.parallel)]
         workers = [threading.Thread(target=run, args=(s, reads, STEPS_PER_READ)) for s in sims]
-        start = time.perf_counter()
+        start, start_cpu = time.perf_counter(), time.process_time()
         for w in workers:
             w.start()
         for w in workers:
             w.join()
         wall = time.perf_counter() - start
-        print('%d threads     %d steps each: %.0f steps/s together (%.0f per simulation)'
-              % (args.parallel, steps, args.parallel * steps / wall, steps / wall))
+        cpu = time.process_time() - start_cpu
+        print('%d threads     %d steps each: %.0f steps/s together (%.0f per simulation), '
+              '%.2f cores busy' % (args.parallel, steps, args.parallel * steps / wall,
+                                   steps / wall, cpu / wall))
 
 
 if __name__ == '__main__':
