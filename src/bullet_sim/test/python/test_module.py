@@ -148,8 +148,9 @@ def test_broken_urdf_raises_load_error_naming_file_and_element():
     with pytest.raises(bullet_sim.LoadError) as err:
         bullet_sim.Robot.from_urdf(text, 'my_robot')
     assert 'my_robot' in str(err.value)
-    with pytest.raises(bullet_sim.LoadError):
+    with pytest.raises(bullet_sim.LoadError) as err:
         bullet_sim.World.from_file('/nonexistent/x.world')
+    assert '/nonexistent/x.world' in str(err.value)
 
 
 def test_unknown_names_and_bad_arguments(make_sim, burger):
@@ -208,6 +209,13 @@ def test_arrays_own_their_memory(make_sim):
     assert ranges.flags.writeable and ranges.base is not None  # its vector, freed with it
     assert joints.positions.dtype == np.float64 and joints.positions.shape == (len(joints.names),)
     assert image.dtype == np.uint8 and image.shape == (480, 640, 3)
+    imu = sim.read_imu('burger')
+    for vector in (imu.angular_velocity, imu.linear_acceleration):
+        assert vector.dtype == np.float64 and vector.shape == (3,)
+    assert imu.orientation.shape == (4,)
+    assert imu.linear_acceleration[2] == pytest.approx(9.8, abs=0.1)  # at rest: +g up
+    odom = sim.read_odometry('burger')
+    assert odom.pose_covariance.shape == (6, 6) and odom.twist_covariance.shape == (6, 6)
     image_before = image.copy()
     del sim, scan
     gc.collect()
