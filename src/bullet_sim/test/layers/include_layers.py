@@ -1,10 +1,10 @@
 """bullet_sim's layers and the one direction of their includes.
 
 A file's layer is named by its folder (src/core/<layer>/, include/bullet_sim/<layer>/,
-src/node/); an include's layer by the path it names. A layer may include itself and the
-layers listed for it below, nothing else: description never includes physics, nothing
-below the simulation includes it, and the node sees the core only through its public
-headers (include/bullet_sim/).
+src/node/, src/python/); an include's layer by the path it names. A layer may include itself
+and the layers listed for it below, nothing else: description never includes physics,
+nothing below the simulation includes it, and the node and the Python module see the core
+only through its public headers (include/bullet_sim/).
 """
 import os
 import re
@@ -19,6 +19,7 @@ ALLOWED = {
     'simulation': {'common', 'description', 'world', 'physics', 'sensors'},
     'render': {'common', 'description', 'world', 'physics', 'sensors', 'simulation'},
     'node': {'common', 'description', 'world', 'sensors', 'simulation', 'render'},
+    'python': {'common', 'description', 'world', 'sensors', 'simulation', 'render'},
 }
 FOLDER_LAYERS = ('description', 'world', 'physics', 'sensors', 'render')
 NODE_FOLDERS = ('services', 'topics', 'runner')
@@ -30,6 +31,8 @@ def layer_of_path(relpath):
     parts = relpath.split('/')
     if parts[:2] == ['src', 'node']:
         return 'node'
+    if parts[:2] == ['src', 'python']:
+        return 'python'
     if parts[:2] == ['src', 'core']:
         rest = parts[2:]
     elif parts[:2] == ['include', 'bullet_sim']:
@@ -57,10 +60,11 @@ def layer_of_include(name, including_layer):
     if parts[0] == 'bullet_sim':
         return layer_of_rest(parts[1:])
     private = parts[0] in FOLDER_LAYERS + ('src', '..') or name.startswith('simulation_impl')
-    if including_layer == 'node':
+    if including_layer in ('node', 'python'):
         if private:
             return 'private'
-        return 'node' if parts[0] in NODE_FOLDERS or len(parts) == 1 else None
+        own_node_header = including_layer == 'node' and len(parts) == 1
+        return 'node' if parts[0] in NODE_FOLDERS or own_node_header else None
     return layer_of_rest(parts) or ('private' if private else None)
 
 
@@ -79,7 +83,7 @@ def violations(relpath, lines):
         if target is None or target == layer or target in ALLOWED[layer]:
             continue
         if target == 'private':
-            why = 'the node uses the core through include/bullet_sim/ only'
+            why = 'the %s uses the core through include/bullet_sim/ only' % layer
         else:
             why = '%s may include %s' % (layer, ', '.join(sorted(ALLOWED[layer] | {layer})))
         found.append((number, name, '%s:%d: %s includes %s (%s): %s' % (

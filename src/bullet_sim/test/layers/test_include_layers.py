@@ -58,6 +58,15 @@ class Direction(unittest.TestCase):
         self.assertEqual(len(found), 1)
         self.assertIn('include/bullet_sim/ only', found[0][2])
 
+    def test_python_module_sees_public_headers_only(self):
+        self.assertEqual(broken('src/python/module.cpp', 'bullet_sim/simulation.h'), [])
+        self.assertEqual(broken('src/python/module.cpp', 'bullet_sim/render/camera_renderer.h'), [])
+        self.assertEqual(broken('src/python/module.cpp', 'pybind11/numpy.h'), [])
+        found = broken('src/python/module.cpp', 'physics/physics_world.h')
+        self.assertEqual(len(found), 1)
+        self.assertIn('python uses the core through include/bullet_sim/ only', found[0][2])
+        self.assertEqual(len(broken('src/python/module.cpp', 'topics/robot_io.h')), 1)
+
     def test_other_headers_are_not_judged(self):
         self.assertEqual(broken('src/core/description/xml_values.h', 'tinyxml2.h'), [])
         self.assertEqual(include_layers.violations('test/core/burger.cpp',
