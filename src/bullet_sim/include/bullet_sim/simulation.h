@@ -137,10 +137,13 @@ class Simulation {
   /// Casts the segments from[i] -> to[i] through the world's static shapes and every
   /// robot's collisions as they are now (what the ray sensors see), returning for each the
   /// distance from from[i] to the first hit, +inf where the segment hits nothing. For
-  /// queries beside the sensors: free space, line of sight.
-  /// @throws std::invalid_argument for lists of different lengths or a non-finite point.
+  /// queries beside the sensors: free space, line of sight. The collisions of
+  /// `ignored_robot` (a robot's name; "" for none) are not hit.
+  /// @throws std::invalid_argument for lists of different lengths or a non-finite point;
+  /// std::out_of_range for an unknown ignored robot.
   std::vector<double> castRays(const std::vector<Eigen::Vector3d>& from,
-                               const std::vector<Eigen::Vector3d>& to);
+                               const std::vector<Eigen::Vector3d>& to,
+                               const std::string& ignored_robot = "");
   ImuData readImu(const std::string& robot, size_t index);
   /// A libgazebo_ros_range.so sensor's reading, its rays cast now.
   RangeData readRange(const std::string& robot, size_t index);

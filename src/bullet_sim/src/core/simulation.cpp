@@ -387,7 +387,10 @@ std::vector<LaserScanData> Simulation::readRays(const std::vector<DueSensor>& ra
 }
 
 std::vector<double> Simulation::castRays(const std::vector<Eigen::Vector3d>& from,
-                                         const std::vector<Eigen::Vector3d>& to) {
+                                         const std::vector<Eigen::Vector3d>& to,
+                                         const std::string& ignored_robot) {
+  const int ignored_index =
+      ignored_robot.empty() ? kNoIgnoredIndex : impl_->robot(ignored_robot).id;
   if (from.size() != to.size()) {
     throw std::invalid_argument("castRays: " + std::to_string(from.size()) + " start points and " +
                                 std::to_string(to.size()) + " end points");
@@ -403,7 +406,7 @@ std::vector<double> Simulation::castRays(const std::vector<Eigen::Vector3d>& fro
   for (size_t i = 0; i < from.size(); ++i) {
     const double length = (to[i] - from[i]).norm();
     if (length <= 0) continue;
-    const double fraction = firstHitFraction(scene, toBt(from[i]), toBt(to[i]));
+    const double fraction = firstHitFraction(scene, toBt(from[i]), toBt(to[i]), ignored_index);
     if (fraction < 1.0) distances[i] = fraction * length;
   }
   return distances;

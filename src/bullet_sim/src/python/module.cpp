@@ -691,6 +691,35 @@ PYBIND11_MODULE(_core, m) {
            "Renders camera `index` of `robot` as the world stands now: an H x W x 3 uint8 "
            "array (rgb8 or bgr8 as the camera's format says; H x W for mono8; uint16 for 16-bit "
            "formats). Raises LoadError for a camera that cannot be rendered.")
+      .def(
+          "cast_rays",
+          [](PySimulation& s, py::array_t<double, py::array::c_style | py::array::forcecast> starts,
+             py::array_t<double, py::array::c_style | py::array::forcecast> ends,
+             const std::string& ignored_robot) {
+            auto points = [](const py::array_t<double, py::array::c_style>& a, const char* what) {
+              if (a.ndim() != 2 || a.shape(1) != 3) {
+                std::ostringstream msg;
+                msg << "cast_rays: " << what << " must be an N x 3 array of points, got shape (";
+                for (py::ssize_t i = 0; i < a.ndim(); ++i) msg << (i ? ", " : "") << a.shape(i);
+                msg << ")";
+                throw std::invalid_argument(msg.str());
+              }
+              std::vector<Eigen::Vector3d> out(static_cast<size_t>(a.shape(0)));
+              const double* d = a.data();
+              for (size_t i = 0; i < out.size(); ++i) out[i] = {d[3 * i], d[3 * i + 1], d[3 * i + 2]};
+              return out;
+            };
+            std::vector<Eigen::Vector3d> a = points(starts, "starts");
+            std::vector<Eigen::Vector3d> b = points(ends, "ends");
+            std::vector<double> d =
+                s.locked([&](Simulation& sim) { return sim.castRays(a, b, ignored_robot); });
+            return ownedArray(std::move(d));
+          },
+          py::arg("starts"), py::arg("ends"), py::arg("ignored_robot") = "",
+          "Distances (m) from each starts[i] to the first thing the segment starts[i] -> ends[i] "
+          "hits (the world's static shapes and every robot where it is now, as the ray "
+          "sensors see them); inf where it hits nothing. `starts`, `ends`: N x 3 arrays; the "
+          "collisions of robot `ignored_robot` are passed through.")
       .def("take_warnings",
            [](PySimulation& s) {
              return s.locked([](Simulation& sim) { return sim.takeWarnings(); });

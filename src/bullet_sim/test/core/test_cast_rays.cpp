@@ -71,6 +71,16 @@ TEST_F(CastRays, SeesRobotsWhereTheyAreNow) {
   EXPECT_NEAR(sim_.castRays({{1, 0, 0.5}}, {{1, 5, 0.5}})[0], 2.9, 1e-6);
 }
 
+TEST_F(CastRays, AnIgnoredRobotIsPassedThrough) {
+  Pose3 at;
+  at.position = {1, 0, 0.5};
+  sim_.spawnRobot("cube", parseRobot(kCubeUrdf, "cube"), at);
+  // from the cube's centre: its own faces are not hit, the wall is
+  EXPECT_NEAR(sim_.castRays({{1, 0, 0.5}}, {{5, 0, 0.5}}, "cube")[0], 0.95, 1e-6);
+  EXPECT_NEAR(sim_.castRays({{0, 0, 0.5}}, {{5, 0, 0.5}}, "cube")[0], 1.95, 1e-6);
+  EXPECT_THROW(sim_.castRays({{0, 0, 0.5}}, {{5, 0, 0.5}}, "sphere"), std::out_of_range);
+}
+
 TEST_F(CastRays, BadInputIsRefused) {
   EXPECT_THROW(sim_.castRays({{0, 0, 0}}, {}), std::invalid_argument);
   EXPECT_THROW(sim_.castRays({{0, 0, std::nan("")}}, {{1, 0, 0}}), std::invalid_argument);

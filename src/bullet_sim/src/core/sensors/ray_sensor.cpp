@@ -20,10 +20,13 @@ namespace {
 class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
  public:
   using ClosestRayResultCallback::ClosestRayResultCallback;
+  /// Objects of this user index are not hit.
+  int ignored_index = kNoIgnoredIndex;
 
   bool needsCollision(btBroadphaseProxy* proxy) const override {
     if (!ClosestRayResultCallback::needsCollision(proxy)) return false;
     const auto* obj = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+    if (obj->getUserIndex() == ignored_index) return false;
     const int type = obj->getCollisionShape()->getShapeType();
     if (type != BOX_SHAPE_PROXYTYPE && type != COMPOUND_SHAPE_PROXYTYPE) return true;
     auto* self = const_cast<BoxAwareRayCallback*>(this);
@@ -63,8 +66,10 @@ class BoxAwareRayCallback : public btCollisionWorld::ClosestRayResultCallback {
 
 }  // namespace
 
-double firstHitFraction(btCollisionWorld& world, const btVector3& from, const btVector3& to) {
+double firstHitFraction(btCollisionWorld& world, const btVector3& from, const btVector3& to,
+                        int ignored_index) {
   BoxAwareRayCallback hit(from, to);
+  hit.ignored_index = ignored_index;
   world.rayTest(from, to, hit);
   return hit.hasHit() ? hit.m_closestHitFraction : 1.0;
 }

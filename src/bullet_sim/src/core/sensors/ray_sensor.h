@@ -27,13 +27,17 @@ namespace bullet_sim {
 /// returned with the scan and the noise generator untouched, so that scans can be cast on
 /// several threads and those that walk one at a time.
 constexpr size_t kMaxListedScanParts = 512;
+/// No object is ignored (every user index is -1, a robot id or above).
+constexpr int kNoIgnoredIndex = -2;
 bool castScan(btCollisionWorld& world, const Eigen::Isometry3d& T_world_sensor,
               const RaySpec& spec, std::mt19937_64* rng, LaserScanData* scan,
               size_t max_listed_parts = kMaxListedScanParts, bool may_walk = true);
 
 /// Fraction of the ray from -> to at its first hit in `world`, 1 when it hits nothing (a walk
-/// of Bullet's broadphase: not on several threads at once).
-double firstHitFraction(btCollisionWorld& world, const btVector3& from, const btVector3& to);
+/// of Bullet's broadphase: not on several threads at once). Objects whose user index is
+/// `ignored_index` (a robot's stand-ins carry its id) are passed through.
+double firstHitFraction(btCollisionWorld& world, const btVector3& from, const btVector3& to,
+                        int ignored_index = kNoIgnoredIndex);
 
 }  // namespace bullet_sim
 
