@@ -159,3 +159,36 @@ TEST(JointStatePublisher, TakesThePlaceOfEveryJointsStatesAtItsOwnRate) {
   with.spawnRobot("car", parseRobot(fourWheelerUrdf(two), "car"), Pose3());
   EXPECT_EQ(dueInOneSecond(&with), (std::array<int, 3>{0, 50, 100}));
 }
+
+TEST(JointStatePublisherReader, ReadsBothPluginsOfAnSdfModelAlike) {
+  const std::string inertial =
+      "<inertial><mass>1</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz>"
+      "</inertia></inertial>";
+  const auto sdf = [&](const std::string& joint_names) {
+    return "<sdf version='1.6'><model name='arm'><link name='base'>" + inertial +
+           "</link><link name='upper'>" + inertial +
+           "</link><joint name='shoulder' type='revolute'><parent>base</parent>"
+           "<child>upper</child><axis><xyz>0 0 1</xyz></axis></joint>"
+           "<plugin name='joints' filename='libgazebo_ros_joint_state_publisher.so'>"
+           "<jointName>" + joint_names + "</jointName><updateRate>10</updateRate></plugin>"
+           "<plugin name='move' filename='libgazebo_ros_planar_move.so'>"
+           "<odometryRate>5</odometryRate></plugin></model></sdf>";
+  };
+  const RobotSpec spec = parseSdfModelString(sdf("shoulder"), "arm.sdf");
+  ASSERT_EQ(spec.joint_state_publishers.size(), 1u);
+  EXPECT_EQ(spec.joint_state_publishers[0].joints, std::vector<std::string>{"shoulder"});
+  EXPECT_DOUBLE_EQ(spec.joint_state_publishers[0].update_rate_hz, 10);
+  ASSERT_TRUE(spec.planar_move);
+  EXPECT_DOUBLE_EQ(spec.planar_move->odometry_rate_hz, 5);
+  try {
+    parseSdfModelString(sdf("elbow"), "arm.sdf");
+    FAIL() << "loaded with an unknown joint";
+  } catch (const LoadError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find("arm.sdf: "), 0u) << message;
+    EXPECT_NE(message.find("<plugin name=\"joints\" filename=\"libgazebo_ros_joint_state_"
+                           "publisher.so\"> <jointName>: the model has no joint 'elbow'"),
+              std::string::npos)
+        << message;
+  }
+}
