@@ -197,3 +197,20 @@ TEST_F(PlanarMove, AResetTakesTheCommandAway) {
   EXPECT_NEAR(movedInStartFrame().norm(), 0, 1e-12);
   EXPECT_NEAR(sim_->readPlanarMoveOdometry("box").twist_in_child.linear.norm(), 0, 1e-12);
 }
+
+TEST_F(PlanarMove, OnTheGroundFrictionTakesMuGDtOffTheSpeedAtEveryStep) {
+  // The box resting on the ground (mu 1 both): within each step the contact's friction
+  // slows it by at most mu g dt = 0.0098 m/s before the next step sets the command again,
+  // so it slides at 0.2 - 0.0098 m/s: 0.3804 m in 2 s. It stays on the ground.
+  sim_ = std::make_unique<Simulation>(flatWorld(), SimConfig());
+  start_.position = Eigen::Vector3d(0, 0, 0.1);
+  sim_->spawnRobot("box", parseRobot(boxUrdf(1.0, planarMove("")), "box"), start_);
+  runFor(sim_.get(), 0.5);
+  const Eigen::Vector3d before = sim_->modelPose("box").position;
+  sim_->setPlanarMoveCommand("box", 0.2, 0, 0);
+  runFor(sim_.get(), 2.0);
+  const Eigen::Vector3d moved = sim_->modelPose("box").position - before;
+  EXPECT_NEAR(moved.x(), (0.2 - 1.0 * 9.8 * kStepS) * 2.0, 1e-4);
+  EXPECT_NEAR(moved.y(), 0, 1e-4);
+  EXPECT_NEAR(moved.z(), 0, 1e-4);
+}
