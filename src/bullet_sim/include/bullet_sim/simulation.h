@@ -162,6 +162,20 @@ class Simulation {
   /// the body's centre of mass) that acts at every step from now on, as its topic's last
   /// message does in Gazebo. A world reset sets it back to zero.
   void setPluginWrench(const std::string& robot, size_t index, const Wrench& wrench);
+  /// libgazebo_ros_planar_move.so's command (RobotSpec::planar_move): x and y (m/s) in the
+  /// model's yaw frame and the yaw rate (rad/s), given to every link of the model at every
+  /// step from the next on (its z velocity and roll and pitch rates set to 0), until a new
+  /// one or the plugin's <cmdTimeout>. A world reset sets it back to zero.
+  /// @throws std::out_of_range for a robot without the plugin.
+  void setPlanarMoveCommand(const std::string& robot, double x_mps, double y_mps,
+                            double yaw_radps);
+  /// libgazebo_ros_planar_move.so's odometry: the model's world pose, its twist measured
+  /// from the previous reading (the first from the spawn), which this one becomes.
+  /// @throws std::out_of_range for a robot without the plugin.
+  OdometryData readPlanarMoveOdometry(const std::string& robot);
+  /// libgazebo_ros_joint_state_publisher.so plugin `index` (RobotSpec::joint_state_publishers):
+  /// its joints' positions and velocities, in the order it names them; efforts left empty.
+  JointStateData readPluginJointStates(const std::string& robot, size_t index) const;
   std::vector<LinkPose> linkPoses(const std::string& robot) const;
   const WorldSpec& world() const;
 

@@ -100,6 +100,7 @@ void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
   }
   equipModelPlugins(name, r);
   equipContactAndConeSensors(name, r);
+  equipMotionPlugins(name, r);
   double joint_state_rate_hz = kDefaultJointStateRateHz;
   if (spec.diff_drive) {
     const DiffDriveSpec& d = *spec.diff_drive;
@@ -193,6 +194,7 @@ void Simulation::Impl::beforeStep(Robot& r, uint64_t k) {
     if (w.force_n.isZero() && w.torque_nm.isZero()) continue;
     r.physics->applyLinkWrench(r.spec.forces[i].body, w);
   }
+  planarMoveBeforeStep(r, k);
 }
 
 void Simulation::Impl::afterStep(Robot& r) {
@@ -275,6 +277,7 @@ void Simulation::reset() {
     impl_->physics->attach(r.id, r.physics.get());
     if (r.drive) r.drive->reset();
     for (Wrench& w : r.plugin_wrenches) w = Wrench();
+    impl_->resetMotionPlugins(&r);
     r.schedule.restart();
     impl_->seedSensors(entry.second.first, &r);
   }

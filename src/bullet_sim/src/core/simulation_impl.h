@@ -18,7 +18,9 @@
 #include "physics/diff_drive.h"
 #include "physics/physics_robot.h"
 #include "physics/physics_worlds.h"
+#include "physics/planar_move.h"
 #include "sensors/imu_sensor.h"
+#include "sensors/planar_odometry.h"
 #include "sensors/sensor_schedule.h"
 
 namespace bullet_sim {
@@ -40,6 +42,11 @@ struct Simulation::Impl {
     /// The last wrench of each libgazebo_ros_force.so plugin (RobotSpec::forces), applied
     /// at every step.
     std::vector<Wrench> plugin_wrenches;
+    /// libgazebo_ros_planar_move.so (RobotSpec::planar_move) and its odometry.
+    std::optional<PlanarMoveDrive> planar_move;
+    PlanarOdometry planar_odometry;
+    /// Each libgazebo_ros_joint_state_publisher.so's joints, as indices into the plan's.
+    std::vector<std::vector<size_t>> joint_state_plugin_joints;
     /// Each bumper's collision: its body and the index of the collision in that body's plan.
     struct BumperTarget {
       size_t body = 0, part = 0;
@@ -67,6 +74,15 @@ struct Simulation::Impl {
   /// The part of equipRobot for the model plugins of gazebo_plugins (p3d, force): checks
   /// the links they name and sets up their state. @throws LoadError naming what is missing.
   void equipModelPlugins(const std::string& name, Robot* r);
+  /// The part of equipRobot for the planar move and joint state publisher plugins: checks
+  /// the joints they name. @throws LoadError naming the plugin and the joint.
+  void equipMotionPlugins(const std::string& name, Robot* r);
+  /// After a world reset: no planar move command, its odometry from the spawn pose.
+  void resetMotionPlugins(Robot* r) const;
+  /// The planar move plugin's work at the start of step k: the model's velocity.
+  void planarMoveBeforeStep(Robot& r, uint64_t k) const;
+  /// The model frame of robot r in the world.
+  static Eigen::Isometry3d modelFrame(const Robot& r);
   /// The part of equipRobot for range sensors, block lasers and bumpers.
   void equipContactAndConeSensors(const std::string& name, Robot* r);
   /// Gazebo's scoped name ("model::link::collision") of part `part` of `object` (a robot's

@@ -192,6 +192,24 @@ struct ForceSpec {
   std::string topic;  ///< <topicName>
 };
 
+/// A libgazebo_ros_planar_move.so plugin: the model is given the commanded planar velocity
+/// at every step (linear x, y in its yaw frame, angular z; its z velocity and roll and pitch
+/// rates set to 0), and its world pose is published as odometry with the odom tf.
+/// Defaults are the plugin's (Noetic's gazebo_plugins).
+struct PlanarMoveSpec {
+  std::string command_topic = "cmd_vel", odometry_topic = "odom", odometry_frame = "odom",
+              robot_base_frame = "base_footprint";
+  double odometry_rate_hz = 20;  ///< <odometryRate>: 0 publishes no odometry and no tf
+  double cmd_timeout_s = -1;     ///< <cmdTimeout>: a command older than this stops; < 0 never
+};
+
+/// A libgazebo_ros_joint_state_publisher.so plugin: sensor_msgs/JointState of the joints it
+/// names, on `joint_states`, at its rate.
+struct JointStatePublisherSpec {
+  std::vector<std::string> joints;  ///< <jointName>, split at commas, in the order given
+  double update_rate_hz = 100;      ///< <updateRate>; 0: every step
+};
+
 /// One URDF <visual>, in its link's frame (for the camera renderer): its geometry (a mesh's
 /// `mesh_uri` is the <mesh filename> as written), link, pose and colour.
 struct VisualSpec : Geometry {
@@ -217,6 +235,10 @@ struct RobotSpec {
   std::optional<DiffDriveSpec> diff_drive;
   std::vector<P3dSpec> p3ds;
   std::vector<ForceSpec> forces;
+  std::optional<PlanarMoveSpec> planar_move;
+  /// Set: joint_states carries these plugins' joints at their rates, and no longer every
+  /// movable joint at the drive's (or 30 Hz).
+  std::vector<JointStatePublisherSpec> joint_state_publishers;
   std::vector<VisualSpec> visuals;
   /// The collision meshes, by <mesh filename> as written in the URDF.
   std::map<std::string, std::shared_ptr<const TriangleMesh>> collision_meshes;

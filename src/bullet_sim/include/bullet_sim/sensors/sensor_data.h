@@ -10,7 +10,9 @@
 namespace bullet_sim {
 
 enum class SensorKind {
-  Ray, Imu, Camera, Odometry, JointStates, GroundTruth, Range, BlockLaser, Bumper
+  Ray, Imu, Camera, Odometry, JointStates, GroundTruth, Range, BlockLaser, Bumper,
+  PlanarMoveOdometry,  ///< libgazebo_ros_planar_move.so's odometry (index 0)
+  PluginJointStates    ///< a libgazebo_ros_joint_state_publisher.so (index into its specs)
 };
 
 /// A sensor whose update period elapsed; index points into the robot spec's

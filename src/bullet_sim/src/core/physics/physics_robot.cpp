@@ -191,6 +191,14 @@ void PhysicsRobot::moveRoot(const Eigen::Isometry3d& T_world_root, const Twist3&
   }
 }
 
+void PhysicsRobot::setBodyVelocities(const Twist3& twist) {
+  for (Body& b : bodies_) {
+    b.rigid->setLinearVelocity(toBt(twist.linear));
+    b.rigid->setAngularVelocity(toBt(twist.angular));
+    b.rigid->activate(true);
+  }
+}
+
 void PhysicsRobot::wake() {
   for (Body& b : bodies_) b.rigid->activate(true);
 }

@@ -79,6 +79,10 @@ class PhysicsRobot {
   void setJointLimits(size_t joint, double lower_rad, double upper_rad);
   /// One of Bullet's hinge parameters (BT_CONSTRAINT_ERP, _CFM, _STOP_ERP, _STOP_CFM).
   void setJointParam(size_t joint, int param, double value);
+  /// Gives every body the same velocity (world axes): `twist.linear` at its centre of
+  /// mass, `twist.angular` about it, as Gazebo's Model::SetLinearVel and SetAngularVel set
+  /// every link's; the hinges pull them together again in the next step.
+  void setBodyVelocities(const Twist3& twist);
   /// Wakes every body of the robot (a sleeping robot is not simulated).
   void wake();
   /// Sets every motor's velocity target for the coming physics step of dt_s.

@@ -63,7 +63,18 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
     drive_rate_hz_ = spec.diff_drive->update_rate_hz;
     entries_.push_back({SensorKind::Odometry, 0, drive_rate_hz_});
   }
-  entries_.push_back({SensorKind::JointStates, 0, joint_state_rate_hz});
+  const std::optional<PlanarMoveSpec>& planar = spec.planar_move;
+  if (planar && planar->odometry_rate_hz > 0) {  // rate 0: the plugin publishes none
+    entries_.push_back({SensorKind::PlanarMoveOdometry, 0, planar->odometry_rate_hz});
+  }
+  for (size_t i = 0; i < spec.joint_state_publishers.size(); ++i) {
+    entries_.push_back(
+        {SensorKind::PluginJointStates, i, spec.joint_state_publishers[i].update_rate_hz});
+  }
+  // A joint state publisher plugin takes the place of the joint states of every joint.
+  if (spec.joint_state_publishers.empty()) {
+    entries_.push_back({SensorKind::JointStates, 0, joint_state_rate_hz});
+  }
 }
 
 bool SensorSchedule::Entry::due(uint64_t k, double dt_s) const {
@@ -87,7 +98,8 @@ void SensorSchedule::startAfter(uint64_t spawn_step, double dt_s) {
   for (Entry& e : entries_) {
     // Gazebo's sensors (not the model plugins: IMU, odometry, joint states).
     if (e.kind == SensorKind::Imu || e.kind == SensorKind::Odometry ||
-        e.kind == SensorKind::JointStates) {
+        e.kind == SensorKind::JointStates || e.kind == SensorKind::PlanarMoveOdometry ||
+        e.kind == SensorKind::PluginJointStates) {
       continue;
     }
     if (e.rate_hz <= 0) continue;  // every step anyway

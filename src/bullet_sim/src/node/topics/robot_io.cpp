@@ -42,7 +42,8 @@ std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
 bool RobotIo::hasTopics(const bullet_sim::RobotSpec& spec) {
   return !spec.rays.empty() || !spec.imus.empty() || !spec.ranges.empty() ||
          !spec.block_lasers.empty() || !spec.bumpers.empty() || !spec.p3ds.empty() ||
-         !spec.forces.empty() || spec.diff_drive.has_value();
+         !spec.forces.empty() || spec.diff_drive.has_value() || spec.planar_move.has_value() ||
+         !spec.joint_state_publishers.empty();
 }
 
 RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
@@ -65,7 +66,7 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
   for (const bullet_sim::BumperSpec& bumper : spec.bumpers)
     bumper_pubs_.push_back(
         CountedPublisher::advertise<gazebo_msgs::ContactsState>(nh, bumper.topic, kQueueSize));
-  if (joint_states) {
+  if (joint_states && spec.joint_state_publishers.empty()) {
     joint_state_pub_ =
         CountedPublisher::advertise<sensor_msgs::JointState>(nh, "joint_states", kQueueSize);
   }
@@ -84,6 +85,7 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
     cmd_vel_sub_ = nh.subscribe(spec.diff_drive->command_topic, 1, &RobotIo::onCmdVel, this,
                                 ros::TransportHints().tcpNoDelay());
   }
+  advertiseMotionPlugins(nh, spec);
 }
 
 void RobotIo::publish(const bullet_sim::DueSensor& due) {
@@ -114,6 +116,10 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
       }
       break;
     case bullet_sim::SensorKind::Camera:  // CameraIo publishes the cameras
+      break;
+    case bullet_sim::SensorKind::PlanarMoveOdometry:
+    case bullet_sim::SensorKind::PluginJointStates:
+      publishMotionPlugin(due);
       break;
     case bullet_sim::SensorKind::Range:
     case bullet_sim::SensorKind::BlockLaser:

@@ -26,7 +26,8 @@ class RobotIo {
  public:
   /// `sim` and `queue` must outlive this object. Without `joint_states` the robot's joint
   /// states are not published (a world's own models: Gazebo publishes theirs only through
-  /// a plugin).
+  /// a plugin). A robot with libgazebo_ros_joint_state_publisher.so plugins publishes
+  /// theirs instead, with or without `joint_states`.
   RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::string& robot,
           const ros::NodeHandle& robot_nh, const std::string& tf_prefix,
           bool joint_states = true);
@@ -49,6 +50,11 @@ class RobotIo {
   /// A libgazebo_ros_force.so plugin's wrench message (plugin `index` of RobotSpec::forces).
   void onWrench(size_t index, const geometry_msgs::Wrench::ConstPtr& wrench);
   void publishOdometry();
+  // gazebo_plugins' planar move and joint state publisher (robot_io_motion_plugins.cpp).
+  void advertiseMotionPlugins(ros::NodeHandle& nh, const bullet_sim::RobotSpec& spec);
+  /// The planar move's odometry and tf, or a joint state publisher's joints.
+  void publishMotionPlugin(const bullet_sim::DueSensor& due);
+  void onPlanarMoveCommand(const geometry_msgs::Twist::ConstPtr& command);
   /// A range sensor's, block laser's or bumper's reading, if someone subscribes.
   void publishRangeOrContacts(const bullet_sim::DueSensor& due);
 
@@ -65,8 +71,12 @@ class RobotIo {
   std::vector<CountedPublisher> ground_truth_pubs_;  ///< one per P3dSpec, same index
   std::vector<ros::Subscriber> wrench_subs_;         ///< one per ForceSpec, same index
   CountedPublisher joint_state_pub_;
+  CountedPublisher planar_odom_pub_;  ///< libgazebo_ros_planar_move.so's odometry
+  ros::Subscriber planar_cmd_sub_;    ///< and its command
+  /// One per JointStatePublisherSpec, same index (all on joint_states).
+  std::vector<CountedPublisher> plugin_joint_state_pubs_;
   ros::Subscriber cmd_vel_sub_;
-  ros::Publisher tf_pub_;  ///< /tf, for the odom transform
+  ros::Publisher tf_pub_;  ///< /tf, for the odom transform (a drive's or the planar move's)
   bool publish_odom_tf_ = false;
 };
 

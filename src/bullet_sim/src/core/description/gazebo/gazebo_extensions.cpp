@@ -17,8 +17,10 @@
 #include "description/gazebo/diff_drive_reader.h"
 #include "description/gazebo/gazebo_values.h"
 #include "description/gazebo/imu_reader.h"
+#include "description/gazebo/joint_state_publisher_reader.h"
 #include "description/gazebo/link_extensions.h"
 #include "description/gazebo/multi_ray_reader.h"
+#include "description/gazebo/planar_move_reader.h"
 #include "description/gazebo/plugin_parameters.h"
 #include "description/gazebo/ray_reader.h"
 #include "description/gazebo/skid_steer_reader.h"
@@ -83,6 +85,8 @@ ModelPluginReader modelPluginReader(const std::string& file) {
   if (file == "libgazebo_ros_skid_steer_drive.so") return readSkidSteerDrivePlugin;
   if (file == "libgazebo_ros_p3d.so") return readP3dPlugin;
   if (file == "libgazebo_ros_force.so") return readForcePlugin;
+  if (file == "libgazebo_ros_planar_move.so") return readPlanarMovePlugin;
+  if (file == "libgazebo_ros_joint_state_publisher.so") return readJointStatePublisherPlugin;
   return nullptr;
 }
 
