@@ -10,7 +10,8 @@
 namespace bullet_sim {
 
 enum class SensorKind {
-  Ray, Imu, Camera, Odometry, JointStates, GroundTruth, Range, BlockLaser, Bumper
+  Ray, Imu, Camera, Odometry, JointStates, GroundTruth, Range, BlockLaser, Bumper,
+  F3d, ForceTorque
 };
 
 /// A sensor whose update period elapsed; index points into the robot spec's
@@ -85,6 +86,15 @@ struct OdometryData {
   Twist3 twist_in_child;  ///< body-frame twist, as nav_msgs/Odometry wants
   /// Row-major 6 x 6 covariances (x, y, z, roll, pitch, yaw), as nav_msgs/Odometry has them.
   std::array<double, 36> pose_covariance{}, twist_covariance{};
+};
+
+/// A force and a torque, laid out as geometry_msgs/WrenchStamped (its frame as the
+/// plugin names it, before any tf_prefix).
+struct WrenchData {
+  double time_s = 0;
+  std::string frame_id;
+  Eigen::Vector3d force_n{0, 0, 0};
+  Eigen::Vector3d torque_nm{0, 0, 0};
 };
 
 /// State of every non-fixed joint, laid out as sensor_msgs/JointState.

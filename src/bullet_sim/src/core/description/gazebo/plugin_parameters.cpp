@@ -49,6 +49,8 @@ const std::map<std::string, std::vector<std::string>>& knownParameters() {
         {"libgazebo_ros_p3d.so",
          {"bodyName", "topicName", "frameName", "xyzOffset", "rpyOffset", "gaussianNoise"}},
         {"libgazebo_ros_force.so", {"bodyName", "topicName"}},
+        {"libgazebo_ros_f3d.so", {"bodyName", "topicName", "frameName"}},
+        {"libgazebo_ros_ft_sensor.so", {"jointName", "topicName", "gaussianNoise"}},
         {"libgazebo_ros_laser.so", laser},
         {"libgazebo_ros_gpu_laser.so", laser},
         {"libgazebo_ros_camera.so", camera},
