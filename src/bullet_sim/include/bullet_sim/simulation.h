@@ -176,6 +176,17 @@ class Simulation {
   /// libgazebo_ros_joint_state_publisher.so plugin `index` (RobotSpec::joint_state_publishers):
   /// its joints' positions and velocities, in the order it names them; efforts left empty.
   JointStateData readPluginJointStates(const std::string& robot, size_t index) const;
+  /// libgazebo_ros_f3d.so plugin `index` (RobotSpec::f3ds): the wrench applied to its body
+  /// in the last step from outside (force plugins, apply_body_wrench, joint efforts; not
+  /// gravity, contacts or joint constraints), world axes, torque about the body's centre of
+  /// mass, whatever its frameName (the frame_id only), as Gazebo's plugin reads it.
+  WrenchData readF3d(const std::string& robot, size_t index) const;
+  /// libgazebo_ros_ft_sensor.so plugin `index` (RobotSpec::ft_sensors): the wrench its
+  /// joint passed in the last step, as the child link exerts it on the joint (minus what
+  /// the joint exerts on the child), in the child link's frame, torque about the joint
+  /// origin; each of the six values plus Gaussian noise of sd gaussianNoise from its own
+  /// seeded generator. frame_id: the child link.
+  WrenchData readForceTorque(const std::string& robot, size_t index);
   std::vector<LinkPose> linkPoses(const std::string& robot) const;
   const WorldSpec& world() const;
 

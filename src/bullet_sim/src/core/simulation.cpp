@@ -99,6 +99,7 @@ void Simulation::Impl::equipRobot(const std::string& name, Robot* r) {
     requireLink(*r->physics, name, "camera '" + s.name + "'", s.link);
   }
   equipModelPlugins(name, r);
+  equipWrenchPlugins(name, r);
   equipContactAndConeSensors(name, r);
   equipMotionPlugins(name, r);
   double joint_state_rate_hz = kDefaultJointStateRateHz;
@@ -199,6 +200,7 @@ void Simulation::Impl::beforeStep(Robot& r, uint64_t k) {
 
 void Simulation::Impl::afterStep(Robot& r) {
   r.physics->updateJointAngles();
+  r.physics->latchAppliedLoads();
   if (r.drive) r.drive->integrateEncoder(*r.physics, cfg.physics_step_s);
 }
 

@@ -53,6 +53,10 @@ struct Simulation::Impl {
       std::string name;  ///< "model::link::collision", as Gazebo scopes it
     };
     std::vector<BumperTarget> bumpers;
+    /// Each libgazebo_ros_ft_sensor.so plugin's hinge (index into the plan's joints) and
+    /// noise generator.
+    std::vector<size_t> ft_joints;
+    std::vector<std::mt19937_64> ft_rngs;
     std::vector<ImuSensor> imus;
     SensorSchedule schedule;
     /// set_link_properties / set_joint_properties changes, put back after a reset().
@@ -83,6 +87,9 @@ struct Simulation::Impl {
   void planarMoveBeforeStep(Robot& r, uint64_t k) const;
   /// The model frame of robot r in the world.
   static Eigen::Isometry3d modelFrame(const Robot& r);
+  /// The part of equipRobot for the plugins that publish wrenches (f3d, ft_sensor): checks
+  /// the links and joints they name. @throws LoadError naming what is missing.
+  void equipWrenchPlugins(const std::string& name, Robot* r);
   /// The part of equipRobot for range sensors, block lasers and bumpers.
   void equipContactAndConeSensors(const std::string& name, Robot* r);
   /// Gazebo's scoped name ("model::link::collision") of part `part` of `object` (a robot's
@@ -120,6 +127,10 @@ struct Simulation::Impl {
       r->range_rngs.push_back(sensorRng(cfg.seed, name, s.name));
     for (const BlockLaserSpec& s : r->spec.block_lasers)
       r->block_laser_rngs.push_back(sensorRng(cfg.seed, name, s.name));
+    r->ft_rngs.clear();
+    for (const FtSensorSpec& s : r->spec.ft_sensors) {
+      r->ft_rngs.push_back(sensorRng(cfg.seed, name, "ft_sensor " + s.name + " " + s.topic));
+    }
     for (ImuSensor& imu : r->imus) imu.reset();
   }
 

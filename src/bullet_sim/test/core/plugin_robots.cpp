@@ -47,6 +47,19 @@ std::string boxUrdf(double mass_kg, const std::string& gazebo) {
   return s.str();
 }
 
+std::string hangingLinkUrdf(const std::string& rpy, const std::string& com,
+                            const std::string& gazebo) {
+  return "<?xml version='1.0'?><robot name='pendulum'>"
+         "<link name='base'><inertial><mass value='50'/>"
+         "<inertia ixx='4.2083' ixy='0' ixz='0' iyy='4.2083' iyz='0' izz='8.3333'/>"
+         "</inertial><collision><geometry><box size='1 1 0.1'/></geometry></collision>"
+         "</link><joint name='hinge' type='continuous'><parent link='base'/>"
+         "<child link='bob'/><origin xyz='0 0 1' rpy='" + rpy + "'/><axis xyz='1 0 0'/>"
+         "</joint><link name='bob'><inertial><origin xyz='" + com + "'/><mass value='2'/>"
+         "<inertia ixx='0.01' ixy='0' ixz='0' iyy='0.01' iyz='0' izz='0.01'/></inertial>"
+         "</link>" + gazebo + "</robot>";
+}
+
 void runFor(bullet_sim::Simulation* sim, double seconds) {
   const long steps = std::lround(seconds / 0.001);
   for (long k = 0; k < steps; ++k) sim->step();

@@ -21,6 +21,14 @@ std::string fourWheelerUrdf(const std::string& gazebo);
 /// only link; `gazebo` is put inside <robot> after it.
 std::string boxUrdf(double mass_kg, const std::string& gazebo);
 
+/// A stand and a pendulum, for the wrench plugins: `base` a slab 1 x 1 x 0.1 m of 50 kg
+/// lying on the ground (spawn it at z 0.05), and `bob` (2 kg, no collision, inertia 0.01
+/// kg m^2 about each axis) hanging from continuous joint `hinge` about x, whose origin is
+/// 1 m above base's and turned by `rpy` ("r p y"); bob's centre of mass at `com` ("x y z")
+/// in its frame. `gazebo` is put inside <robot> after them.
+std::string hangingLinkUrdf(const std::string& rpy, const std::string& com,
+                            const std::string& gazebo);
+
 /// Steps `sim` for `seconds` of 1 ms steps.
 void runFor(bullet_sim::Simulation* sim, double seconds);
 

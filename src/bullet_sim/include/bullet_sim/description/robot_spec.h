@@ -210,6 +210,27 @@ struct JointStatePublisherSpec {
   double update_rate_hz = 100;      ///< <updateRate>; 0: every step
 };
 
+/// A libgazebo_ros_f3d.so plugin: the wrench applied to one link (the forces and torques
+/// pushed on it from outside: force plugins, apply_body_wrench, joint efforts; not gravity,
+/// contacts or joint constraints), world axes, torque about its centre of mass, as
+/// geometry_msgs/WrenchStamped at every step.
+struct F3dSpec {
+  std::string body;   ///< <bodyName>
+  std::string topic;  ///< <topicName>
+  /// <frameName>: only the messages' frame_id (Gazebo's plugin never turns the wrench).
+  std::string frame = "world";
+};
+
+/// A libgazebo_ros_ft_sensor.so plugin: the wrench one joint passes between its links, as
+/// the child exerts it on the joint, in the child link's frame, torque about the joint.
+struct FtSensorSpec {
+  std::string name;   ///< the <plugin name>: seeds its noise
+  std::string joint;  ///< <jointName>, a movable joint of the robot
+  std::string topic;  ///< <topicName>
+  double gaussian_noise = 0;  ///< <gaussianNoise>: sd of the noise on each of the six values
+  double update_rate_hz = 0;  ///< <updateRate>; 0: every step
+};
+
 /// One URDF <visual>, in its link's frame (for the camera renderer): its geometry (a mesh's
 /// `mesh_uri` is the <mesh filename> as written), link, pose and colour.
 struct VisualSpec : Geometry {
@@ -239,6 +260,8 @@ struct RobotSpec {
   /// Set: joint_states carries these plugins' joints at their rates, and no longer every
   /// movable joint at the drive's (or 30 Hz).
   std::vector<JointStatePublisherSpec> joint_state_publishers;
+  std::vector<F3dSpec> f3ds;
+  std::vector<FtSensorSpec> ft_sensors;
   std::vector<VisualSpec> visuals;
   /// The collision meshes, by <mesh filename> as written in the URDF.
   std::map<std::string, std::shared_ptr<const TriangleMesh>> collision_meshes;

@@ -12,7 +12,8 @@ namespace bullet_sim {
 enum class SensorKind {
   Ray, Imu, Camera, Odometry, JointStates, GroundTruth, Range, BlockLaser, Bumper,
   PlanarMoveOdometry,  ///< libgazebo_ros_planar_move.so's odometry (index 0)
-  PluginJointStates    ///< a libgazebo_ros_joint_state_publisher.so (index into its specs)
+  PluginJointStates,   ///< a libgazebo_ros_joint_state_publisher.so (index into its specs)
+  F3d, ForceTorque
 };
 
 /// A sensor whose update period elapsed; index points into the robot spec's
@@ -87,6 +88,15 @@ struct OdometryData {
   Twist3 twist_in_child;  ///< body-frame twist, as nav_msgs/Odometry wants
   /// Row-major 6 x 6 covariances (x, y, z, roll, pitch, yaw), as nav_msgs/Odometry has them.
   std::array<double, 36> pose_covariance{}, twist_covariance{};
+};
+
+/// A force and a torque, laid out as geometry_msgs/WrenchStamped (its frame as the
+/// plugin names it, before any tf_prefix).
+struct WrenchData {
+  double time_s = 0;
+  std::string frame_id;
+  Eigen::Vector3d force_n{0, 0, 0};
+  Eigen::Vector3d torque_nm{0, 0, 0};
 };
 
 /// State of every non-fixed joint, laid out as sensor_msgs/JointState.

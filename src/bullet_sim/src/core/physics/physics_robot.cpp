@@ -37,6 +37,7 @@ PhysicsRobot::PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPl
   bodies_.reserve(plan_.bodies.size());
   for (const BodyPlan& b : plan_.bodies) buildBody(b, robot_id);
   placeBodies(T_world_model);
+  feedback_.resize(plan_.joints.size());
   for (const JointPlan& j : plan_.joints) {
     const Eigen::Quaterniond align =
         Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), j.axis);
@@ -47,12 +48,18 @@ PhysicsRobot::PhysicsRobot(btDiscreteDynamicsWorld* world, int robot_id, RobotPl
         *bodies_[j.parent_body].rigid, *bodies_[j.child_body].rigid, toBt(frame_in_parent),
         toBt(frame_in_child), kAngleOfChildInParent);
     if (j.limited) hinge->setLimit(j.lower, j.upper);
+    hinge->enableFeedback(true);
+    hinge->setJointFeedback(&feedback_[hinges_.size()]);
     world_->addConstraint(hinge.get(), true);
     hinges_.push_back(std::move(hinge));
   }
   joint_angles_.assign(hinges_.size(), 0.0);
   motors_.assign(hinges_.size(), Motor());
   damping_.assign(hinges_.size(), 0.0);
+  body_loads_pending_.assign(bodies_.size(), Wrench());
+  body_loads_last_.assign(bodies_.size(), Wrench());
+  effort_pending_nm_.assign(hinges_.size(), 0.0);
+  effort_last_nm_.assign(hinges_.size(), 0.0);
   last_raw_angles_.assign(hinges_.size(), 0.0);
 }
 
@@ -305,22 +312,6 @@ void PhysicsRobot::setJointPositions(const std::vector<double>& angles_rad) {
     last_raw_angles_[i] = hinges_[i]->getHingeAngle();
     motors_[i].reference_rad = angles_rad[i];
   }
-}
-
-void PhysicsRobot::applyLinkWrench(const std::string& link, const Wrench& wrench) {
-  btRigidBody& rb = *bodies_[plan_.body_of_link.at(link)].rigid;
-  rb.activate(true);
-  rb.applyCentralForce(toBt(wrench.force_n));
-  rb.applyTorque(toBt(wrench.torque_nm));
-}
-
-void PhysicsRobot::applyJointEffort(size_t joint, double effort_nm) {
-  btHingeConstraint& h = *hinges_[joint];
-  const btVector3 torque = jointAxisInWorld(joint) * effort_nm;
-  h.getRigidBodyA().activate(true);
-  h.getRigidBodyB().activate(true);
-  h.getRigidBodyB().applyTorque(torque);
-  h.getRigidBodyA().applyTorque(-torque);
 }
 
 void PhysicsRobot::setJointMotor(size_t joint, double velocity_radps, double max_torque_nm) {

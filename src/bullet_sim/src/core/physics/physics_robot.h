@@ -67,6 +67,20 @@ class PhysicsRobot {
   /// Adds a torque about a hinge's axis (child turned positively, parent the other way),
   /// for the coming step.
   void applyJointEffort(size_t joint, double effort_nm);
+  /// The wrench applyLinkWrench and applyJointEffort put on body `body` (index into
+  /// plan().bodies) for the last step: world axes, torque about its centre of mass. Gravity,
+  /// contacts, joint constraints, motors and damping are not in it.
+  Wrench appliedWrench(size_t body) const;
+  /// The wrench hinge `joint` passed to its child body in the last step: world axes, torque
+  /// about the child body's centre of mass. Its constraint forces (from Bullet's joint
+  /// feedback: the hinge, its limits and motor) plus the efforts applyJointEffort put on it.
+  /// A sleeping body keeps the value of its last step awake.
+  Wrench jointWrenchOnChild(size_t joint) const;
+  /// World position of body `body`'s centre of mass.
+  Eigen::Vector3d bodyCentreOfMass(size_t body) const;
+  /// Makes the loads applied since the last call the ones appliedWrench and
+  /// jointWrenchOnChild report; called after every physics step.
+  void latchAppliedLoads();
   /// The body (index into plan().bodies) that holds `link`.
   size_t bodyOfLink(const std::string& link) const { return plan_.body_of_link.at(link); }
   /// New mass and principal moments of a body, about its centre of mass and axes.
@@ -120,6 +134,11 @@ class PhysicsRobot {
   RobotPlan plan_;
   std::vector<Body> bodies_;
   std::vector<std::unique_ptr<btHingeConstraint>> hinges_;
+  /// Bullet's feedback of each hinge (sized once: the hinges point into it).
+  std::vector<btJointFeedback> feedback_;
+  /// Loads applied for the coming step and for the last one: per body, per hinge.
+  std::vector<Wrench> body_loads_pending_, body_loads_last_;
+  std::vector<double> effort_pending_nm_, effort_last_nm_;
   std::vector<double> joint_angles_, last_raw_angles_;
   struct Motor {
     bool enabled = false;

@@ -59,6 +59,12 @@ SensorSchedule::SensorSchedule(const std::string& robot, const RobotSpec& spec,
   for (size_t i = 0; i < spec.bumpers.size(); ++i) {
     entries_.push_back({SensorKind::Bumper, i, spec.bumpers[i].update_rate_hz});
   }
+  for (size_t i = 0; i < spec.f3ds.size(); ++i) {
+    entries_.push_back({SensorKind::F3d, i, 0.0});  // Gazebo's f3d has no rate: every step
+  }
+  for (size_t i = 0; i < spec.ft_sensors.size(); ++i) {
+    entries_.push_back({SensorKind::ForceTorque, i, spec.ft_sensors[i].update_rate_hz});
+  }
   if (spec.diff_drive) {
     drive_rate_hz_ = spec.diff_drive->update_rate_hz;
     entries_.push_back({SensorKind::Odometry, 0, drive_rate_hz_});

@@ -91,6 +91,19 @@ sensor_msgs::Imu toMsg(const bullet_sim::ImuData& imu) {
   return msg;
 }
 
+geometry_msgs::WrenchStamped toMsg(const bullet_sim::WrenchData& wrench) {
+  geometry_msgs::WrenchStamped msg;
+  msg.header.stamp.fromSec(wrench.time_s);
+  msg.header.frame_id = wrench.frame_id;
+  msg.wrench.force.x = wrench.force_n.x();
+  msg.wrench.force.y = wrench.force_n.y();
+  msg.wrench.force.z = wrench.force_n.z();
+  msg.wrench.torque.x = wrench.torque_nm.x();
+  msg.wrench.torque.y = wrench.torque_nm.y();
+  msg.wrench.torque.z = wrench.torque_nm.z();
+  return msg;
+}
+
 nav_msgs::Odometry toMsg(const bullet_sim::OdometryData& odom) {
   nav_msgs::Odometry msg;
   msg.header.stamp.fromSec(odom.time_s);

@@ -7,6 +7,7 @@
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/Twist.h>
+#include <geometry_msgs/WrenchStamped.h>
 #include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
@@ -28,6 +29,7 @@ sensor_msgs::LaserScan toMsg(const bullet_sim::LaserScanData& scan);
 sensor_msgs::Imu toMsg(const bullet_sim::ImuData& imu);
 nav_msgs::Odometry toMsg(const bullet_sim::OdometryData& odom);
 sensor_msgs::JointState toMsg(const bullet_sim::JointStateData& joints);
+geometry_msgs::WrenchStamped toMsg(const bullet_sim::WrenchData& wrench);
 /// The odom -> base transform carried by an odometry reading.
 geometry_msgs::TransformStamped toTransformMsg(const bullet_sim::OdometryData& odom);
 

@@ -42,7 +42,8 @@ std::optional<Field> firstNonFiniteField(const geometry_msgs::Twist& command) {
 bool RobotIo::hasTopics(const bullet_sim::RobotSpec& spec) {
   return !spec.rays.empty() || !spec.imus.empty() || !spec.ranges.empty() ||
          !spec.block_lasers.empty() || !spec.bumpers.empty() || !spec.p3ds.empty() ||
-         !spec.forces.empty() || spec.diff_drive.has_value() || spec.planar_move.has_value() ||
+         !spec.forces.empty() || !spec.f3ds.empty() || !spec.ft_sensors.empty() ||
+         spec.diff_drive.has_value() || spec.planar_move.has_value() ||
          !spec.joint_state_publishers.empty();
 }
 
@@ -77,6 +78,12 @@ RobotIo::RobotIo(bullet_sim::Simulation& sim, PublishQueue& queue, const std::st
     wrench_subs_.push_back(nh.subscribe<geometry_msgs::Wrench>(
         spec.forces[i].topic, 1,
         [this, i](const geometry_msgs::Wrench::ConstPtr& wrench) { onWrench(i, wrench); }));
+  for (const bullet_sim::F3dSpec& f3d : spec.f3ds)
+    f3d_pubs_.push_back(
+        CountedPublisher::advertise<geometry_msgs::WrenchStamped>(nh, f3d.topic, kQueueSize));
+  for (const bullet_sim::FtSensorSpec& ft : spec.ft_sensors)
+    ft_pubs_.push_back(
+        CountedPublisher::advertise<geometry_msgs::WrenchStamped>(nh, ft.topic, kQueueSize));
   if (spec.diff_drive) {
     odom_pub_ = CountedPublisher::advertise<nav_msgs::Odometry>(
         nh, spec.diff_drive->odometry_topic, kQueueSize);
@@ -126,6 +133,10 @@ void RobotIo::publish(const bullet_sim::DueSensor& due) {
     case bullet_sim::SensorKind::Bumper:
       publishRangeOrContacts(due);
       break;
+    case bullet_sim::SensorKind::F3d:
+    case bullet_sim::SensorKind::ForceTorque:
+      publishWrench(due);
+      break;
   }
 }
 
@@ -167,6 +178,17 @@ void RobotIo::onWrench(size_t index, const geometry_msgs::Wrench::ConstPtr& wren
   w.force_n = Eigen::Vector3d(values[0], values[1], values[2]);
   w.torque_nm = Eigen::Vector3d(values[3], values[4], values[5]);
   sim_.setPluginWrench(robot_, index, w);
+}
+
+void RobotIo::publishWrench(const bullet_sim::DueSensor& due) {
+  const bool f3d = due.kind == bullet_sim::SensorKind::F3d;
+  const std::vector<CountedPublisher>& pubs = f3d ? f3d_pubs_ : ft_pubs_;
+  if (due.index >= pubs.size() || !pubs[due.index].hasSubscribers()) return;
+  bullet_sim::WrenchData wrench =
+      f3d ? sim_.readF3d(robot_, due.index) : sim_.readForceTorque(robot_, due.index);
+  // As Gazebo's plugins: the frame (frameName, or the child link) under the tf_prefix.
+  wrench.frame_id = resolveFrame(tf_prefix_, wrench.frame_id);
+  queue_.publish(pubs[due.index].publisher(), toMsg(wrench));
 }
 
 void RobotIo::publishRangeOrContacts(const bullet_sim::DueSensor& due) {

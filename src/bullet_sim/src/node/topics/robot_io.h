@@ -16,7 +16,7 @@
 namespace bullet_sim_node {
 
 /// Publishes a robot's sensors (scan, imu, odom + tf, joint_states, range, block laser
-/// points, bumper contacts) as they fall due and
+/// points, bumper contacts, wrenches) as they fall due and
 /// feeds its diff-drive commands to the simulation. Topic names come from the robot's
 /// Gazebo tags, resolved in `robot_nh` (the robot's namespace); frame ids (odom, base,
 /// scan, imu) are put under `tf_prefix` as Gazebo's plugins do. A sensor topic nobody
@@ -55,6 +55,8 @@ class RobotIo {
   /// The planar move's odometry and tf, or a joint state publisher's joints.
   void publishMotionPlugin(const bullet_sim::DueSensor& due);
   void onPlanarMoveCommand(const geometry_msgs::Twist::ConstPtr& command);
+  /// An f3d's or ft_sensor's wrench, if someone subscribes.
+  void publishWrench(const bullet_sim::DueSensor& due);
   /// A range sensor's, block laser's or bumper's reading, if someone subscribes.
   void publishRangeOrContacts(const bullet_sim::DueSensor& due);
 
@@ -70,6 +72,8 @@ class RobotIo {
   CountedPublisher odom_pub_;
   std::vector<CountedPublisher> ground_truth_pubs_;  ///< one per P3dSpec, same index
   std::vector<ros::Subscriber> wrench_subs_;         ///< one per ForceSpec, same index
+  std::vector<CountedPublisher> f3d_pubs_;  ///< one per F3dSpec, same index
+  std::vector<CountedPublisher> ft_pubs_;   ///< one per FtSensorSpec, same index
   CountedPublisher joint_state_pub_;
   CountedPublisher planar_odom_pub_;  ///< libgazebo_ros_planar_move.so's odometry
   ros::Subscriber planar_cmd_sub_;    ///< and its command

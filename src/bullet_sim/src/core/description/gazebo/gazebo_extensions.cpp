@@ -24,6 +24,7 @@
 #include "description/gazebo/plugin_parameters.h"
 #include "description/gazebo/ray_reader.h"
 #include "description/gazebo/skid_steer_reader.h"
+#include "description/gazebo/wrench_plugin_reader.h"
 #include "description/xml_values.h"
 
 namespace bullet_sim {
@@ -87,6 +88,8 @@ ModelPluginReader modelPluginReader(const std::string& file) {
   if (file == "libgazebo_ros_force.so") return readForcePlugin;
   if (file == "libgazebo_ros_planar_move.so") return readPlanarMovePlugin;
   if (file == "libgazebo_ros_joint_state_publisher.so") return readJointStatePublisherPlugin;
+  if (file == "libgazebo_ros_f3d.so") return readF3dPlugin;
+  if (file == "libgazebo_ros_ft_sensor.so") return readFtSensorPlugin;
   return nullptr;
 }
 

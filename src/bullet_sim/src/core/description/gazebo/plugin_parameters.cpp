@@ -53,6 +53,8 @@ const std::map<std::string, std::vector<std::string>>& knownParameters() {
          {"commandTopic", "odometryTopic", "odometryFrame", "robotBaseFrame", "odometryRate",
           "cmdTimeout"}},
         {"libgazebo_ros_joint_state_publisher.so", {"jointName"}},
+        {"libgazebo_ros_f3d.so", {"bodyName", "topicName", "frameName"}},
+        {"libgazebo_ros_ft_sensor.so", {"jointName", "topicName", "gaussianNoise"}},
         {"libgazebo_ros_laser.so", laser},
         {"libgazebo_ros_gpu_laser.so", laser},
         {"libgazebo_ros_camera.so", camera},
