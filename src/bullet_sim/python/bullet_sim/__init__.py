@@ -18,6 +18,13 @@ Importing bullet_sim loads nothing compiled: the module's names come from bullet
 first use, so that ROS clients of the generated bullet_sim.srv never load the core.
 """
 
+# Found from the source folder first (a subprocess inherits the source folder the devel
+# space's __init__ puts on sys.path), the package still spans the devel folder that holds
+# _core and the generated messages.
+from pkgutil import extend_path as _extend_path
+
+__path__ = _extend_path(__path__, __name__)
+
 __all__ = [
     'Condition', 'DueSensor', 'Imu', 'JointStates', 'LoadError', 'NotFoundError', 'Odometry',
     'Pose', 'Robot', 'Scan', 'SensorKind', 'Simulation', 'Twist', 'World',
