@@ -96,14 +96,20 @@ def main(argv=None):
             self.next_eval = args.eval_every
             self.rows = []
 
+        def _on_training_start(self):
+            self.record()  # the untrained policy
+
         def _on_step(self):
             if self.num_timesteps < self.next_eval:
                 return True
             self.next_eval += args.eval_every
+            return self.record() < args.target
+
+        def record(self):
             rate, ret, length = evaluate(self.model, eval_env, args.eval_episodes, 10_000)
             wall = time.time() - start
             row = {'env_steps': self.num_timesteps, 'wall_s': round(wall, 1),
-                   'steps_per_s': round(self.num_timesteps / wall, 1),
+                   'steps_per_s': round(self.num_timesteps / max(wall, 1e-9), 1),
                    'success_rate': rate, 'mean_return': round(ret, 2),
                    'mean_length': round(length, 1)}
             self.rows.append(row)
@@ -112,7 +118,7 @@ def main(argv=None):
                 w.writeheader()
                 w.writerows(self.rows)
             print(' '.join(f'{k}={v}' for k, v in row.items()), flush=True)
-            return rate < args.target
+            return rate
 
     progress = Progress()
     model.learn(total_timesteps=args.timesteps, callback=progress)
