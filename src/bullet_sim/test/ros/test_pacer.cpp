@@ -40,44 +40,41 @@ double run(Pacer* pacer, FakeWall* wall, double sim_s, double wall_s) {
   return sim_s;
 }
 
+// The sim time run in `wall_s` of wall time at `real_time_factor`, after `run_s` of wall
+// time paced and then a stall of `stall_s` (the wall clock moves, the simulation does
+// not).
+double simTimeAfterStall(double real_time_factor, double run_s, double stall_s,
+                         double wall_s) {
+  FakeWall wall;
+  Pacer pacer = wall.make(real_time_factor);
+  const double before = run(&pacer, &wall, 0.0, run_s);
+  EXPECT_NEAR(before, run_s * real_time_factor, 0.0015);
+  wall.pass(stall_s);
+  return run(&pacer, &wall, before, wall_s) - before;
+}
+
 }  // namespace
 
 TEST(Pacer, AfterAStallPacesOnFromNowWithoutCatchingUp) {
-  // Real time: 1 s of wall time runs 1 s of sim time. Then a stall of 1 s (the wall
-  // clock moves, the simulation does not), then 0.1 s of wall time: 0.1 s of sim time,
-  // as Gazebo's world waits from the previous step's wall time, not the 1.1 s that
-  // catching up would run.
-  FakeWall wall;
-  Pacer pacer = wall.make(1.0);
-  const double before = run(&pacer, &wall, 0.0, 1.0);
-  EXPECT_NEAR(before, 1.0, 0.0015);
-  wall.pass(1.0);
-  const double after = run(&pacer, &wall, before, 0.1);
-  // At most the lag still caught up (Pacer::kMaxLagS) and a step over 0.1 s.
-  EXPECT_GE(after - before, 0.1 - 0.0015);
-  EXPECT_LE(after - before, 0.1 + Pacer::kMaxLagS + 0.0015);
+  // Real time, a stall of 1 s, then 0.1 s of wall time: 0.1 s of sim time, as Gazebo's
+  // world waits from the previous step's wall time, not the 1.1 s that catching up would
+  // run. At most the lag still caught up (Pacer::kMaxLagS) and a step more.
+  const double sim_s = simTimeAfterStall(1.0, 1.0, 1.0, 0.1);
+  EXPECT_GE(sim_s, 0.1 - 0.0015);
+  EXPECT_LE(sim_s, 0.1 + Pacer::kMaxLagS + 0.0015);
 }
 
 TEST(Pacer, AfterAStallKeepsTheFactor) {
   // Four times real time: 0.1 s of wall time after a 0.5 s stall gives 0.4 s of sim time.
-  FakeWall wall;
-  Pacer pacer = wall.make(4.0);
-  const double before = run(&pacer, &wall, 0.0, 0.2);
-  wall.pass(0.5);
-  const double after = run(&pacer, &wall, before, 0.1);
-  EXPECT_GE(after - before, 0.4 - 0.0015);
-  EXPECT_LE(after - before, 0.4 + 4 * Pacer::kMaxLagS + 0.0015);
+  const double sim_s = simTimeAfterStall(4.0, 0.2, 0.5, 0.1);
+  EXPECT_GE(sim_s, 0.4 - 0.0015);
+  EXPECT_LE(sim_s, 0.4 + 4 * Pacer::kMaxLagS + 0.0015);
 }
 
 TEST(Pacer, ALateWakeWithinTheToleranceIsCaughtUp) {
   // A sleep that wakes 5 ms late (within Pacer::kMaxLagS) costs no sim time: after it,
   // 0.1 s of wall time has run 0.105 s of sim time, the factor over the whole stretch.
-  FakeWall wall;
-  Pacer pacer = wall.make(1.0);
-  const double before = run(&pacer, &wall, 0.0, 0.1);
-  wall.pass(0.005);
-  const double after = run(&pacer, &wall, before, 0.1);
-  EXPECT_NEAR(after - before, 0.105, 0.0015);
+  EXPECT_NEAR(simTimeAfterStall(1.0, 0.1, 0.005, 0.1), 0.105, 0.0015);
 }
 
 TEST(Pacer, UnpacedTakesWholeRounds) {
