@@ -30,7 +30,11 @@ SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
                      bool state_topics, std::function<double()> real_time_factor)
     : sim_(sim),
       nh_(nh),
-      cameras_(sim, queue_, std::move(real_time_factor)),
+      // Paused, Gazebo's world does not step on while a frame renders.
+      cameras_(sim, queue_,
+               [this, real_time_factor = std::move(real_time_factor)] {
+                 return paused_ ? 0.0 : real_time_factor();
+               }),
       paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   if (state_topics) {
