@@ -92,11 +92,14 @@ class Simulation {
   /// While an external wrench or effort is set it takes one step. With `taken`, says how
   /// many steps it took.
   std::vector<DueSensor> stepToNextReading(unsigned max_steps, unsigned* taken = nullptr);
-  /// Asks triggered camera `index` of `robot` (CameraSpec::trigger_topic) for one frame:
-  /// it is due with the next step, one frame per call (calls made between two steps are
-  /// served one per step), as Gazebo's triggered camera renders once per trigger.
+  /// Asks triggered camera `index` of `robot` (CameraSpec::trigger_topic) for one frame,
+  /// due at the first step that ends `after_s` of sim time or more from now (the next step
+  /// at the earliest): one frame per call, a camera's frames due at the same step served
+  /// one per step, as Gazebo's triggered camera renders once per trigger, one frame a
+  /// render. `after_s` stands for the sim time that passes in Gazebo while its render
+  /// thread draws the frame, its world stepping on.
   /// @throws std::out_of_range for an unknown robot or a camera that is not triggered.
-  void triggerCamera(const std::string& robot, size_t index);
+  void triggerCamera(const std::string& robot, size_t index, double after_s = 0);
   /// SimConfig::seed: sensor noise (cameras' too) is seeded from it, the robot and sensor.
   uint64_t seed() const;
   double timeS() const;

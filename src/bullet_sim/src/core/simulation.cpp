@@ -205,9 +205,13 @@ void Simulation::Impl::afterStep(Robot& r) {
 }
 
 unsigned Simulation::Impl::stepsToReading(uint64_t first, unsigned max_steps) const {
+  // A triggered camera's frame ends the stretch at the step it is due.
   for (const auto& entry : robots) {
-    for (unsigned pending : entry.second->camera_triggers)
-      if (pending > 0) return 1;
+    for (const std::multiset<uint64_t>& due : entry.second->camera_triggers) {
+      if (due.empty()) continue;
+      const uint64_t at = std::max(*due.begin(), first);
+      max_steps = static_cast<unsigned>(std::min<uint64_t>(max_steps, at - first + 1));
+    }
   }
   for (unsigned n = 1; n < max_steps; ++n) {
     for (const auto& entry : robots) {
@@ -237,24 +241,31 @@ std::vector<DueSensor> Simulation::stepToNextReading(unsigned max_steps, unsigne
   std::vector<DueSensor> due;
   for (auto& entry : impl.robots) {
     entry.second->schedule.collectDue(impl.steps, impl.cfg.physics_step_s, &due);
-    std::vector<unsigned>& triggers = entry.second->camera_triggers;
+    std::vector<std::multiset<uint64_t>>& triggers = entry.second->camera_triggers;
     for (size_t i = 0; i < triggers.size(); ++i) {
-      if (triggers[i] == 0) continue;
-      --triggers[i];
+      if (triggers[i].empty() || *triggers[i].begin() > impl.steps) continue;
+      triggers[i].erase(triggers[i].begin());
       due.push_back({entry.first, SensorKind::Camera, i});
     }
   }
   return due;
 }
 
-void Simulation::triggerCamera(const std::string& robot, size_t index) {
+void Simulation::triggerCamera(const std::string& robot, size_t index, double after_s) {
   Impl::Robot& r = impl_->robot(robot);
   if (index >= r.spec.cameras.size() || r.spec.cameras[index].trigger_topic.empty()) {
     throw std::out_of_range("robot '" + robot + "' has no triggered camera " +
                             std::to_string(index));
   }
-  r.camera_triggers.resize(r.spec.cameras.size(), 0);
-  ++r.camera_triggers[index];
+  if (!(after_s >= 0 && std::isfinite(after_s))) {
+    throw std::invalid_argument("triggerCamera: the delay of camera " + std::to_string(index) +
+                                " of robot '" + robot + "' is " + std::to_string(after_s) +
+                                " s, not a finite time >= 0");
+  }
+  // The first step that ends after_s or more on (a step's worth of rounding forgiven).
+  const double steps = std::ceil(after_s / impl_->cfg.physics_step_s - 1e-9);
+  r.camera_triggers.resize(r.spec.cameras.size());
+  r.camera_triggers[index].insert(impl_->steps + std::max<uint64_t>(1, static_cast<uint64_t>(steps)));
 }
 
 uint64_t Simulation::seed() const { return impl_->cfg.seed; }
@@ -281,6 +292,12 @@ void Simulation::reset() {
     for (Wrench& w : r.plugin_wrenches) w = Wrench();
     impl_->resetMotionPlugins(&r);
     r.schedule.restart();
+    // Frames asked before the reset are due from its first step on, as asked.
+    for (std::multiset<uint64_t>& due : r.camera_triggers) {
+      std::multiset<uint64_t> rebased;
+      for (uint64_t at : due) rebased.insert(at > impl_->steps ? at - impl_->steps : 1);
+      due.swap(rebased);
+    }
     impl_->seedSensors(entry.second.first, &r);
   }
   impl_->steps = 0;

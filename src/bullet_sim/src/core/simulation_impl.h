@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <random>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -62,7 +63,8 @@ struct Simulation::Impl {
     /// set_link_properties / set_joint_properties changes, put back after a reset().
     std::map<std::string, LinkProperties> link_changes;
     std::map<std::string, JointDynamics> joint_changes;
-    std::vector<unsigned> camera_triggers;  ///< frames asked of each triggered camera
+    /// The steps at which each triggered camera's asked frames are due (one per frame).
+    std::vector<std::multiset<uint64_t>> camera_triggers;
   };
 
   Impl(const WorldSpec& w, const SimConfig& c)

@@ -2,6 +2,7 @@
 // libgazebo_ros_block_laser.so and libgazebo_ros_bumper.so).
 
 #include <map>
+#include <random>
 
 #include "bullet_sim/errors.h"
 #include "description/robot_plan.h"
@@ -23,6 +24,19 @@ void requireSensorLink(const PhysicsRobot& robot, const std::string& robot_name,
 /// (which has none, as a rule) the one Gazebo gives it.
 const std::string& shownName(const CollisionPlan& c) {
   return c.name.empty() ? c.gazebo_name : c.name;
+}
+
+/// The reading of a range sensor or block laser `spec` on `robot` at sim time `time_s`:
+/// its cone of rays cast in `ray_world` from where its link is now, made a reading by
+/// `make` (rangeReading, blockLaserCloud) with the noise drawn from `rng`.
+template <class Spec, class Make>
+auto readRayCone(const PhysicsRobot& robot, const Spec& spec, std::mt19937_64* rng,
+                 btCollisionWorld& ray_world, double time_s, Make make) {
+  const Eigen::Isometry3d T_world_sensor =
+      robot.linkPose(spec.link) * toIsometry(spec.pose_in_link);
+  auto data = make(spec, castRayCone(ray_world, T_world_sensor, spec.rays), rng);
+  data.time_s = time_s;
+  return data;
 }
 
 }  // namespace
@@ -81,26 +95,14 @@ std::string Simulation::Impl::collisionName(const btCollisionObject* object, int
 
 RangeData Simulation::readRange(const std::string& robot, size_t index) {
   Impl::Robot& r = impl_->robot(robot);
-  const RangeSpec& spec = r.spec.ranges.at(index);
-  const Eigen::Isometry3d T_world_sensor =
-      r.physics->linkPose(spec.link) * toIsometry(spec.pose_in_link);
-  RangeData data = rangeReading(
-      spec, castRayCone(impl_->physics->rayWorld(), T_world_sensor, spec.rays),
-      &r.range_rngs[index]);
-  data.time_s = timeS();
-  return data;
+  return readRayCone(*r.physics, r.spec.ranges.at(index), &r.range_rngs.at(index),
+                     impl_->physics->rayWorld(), timeS(), rangeReading);
 }
 
 BlockLaserCloudData Simulation::readBlockLaser(const std::string& robot, size_t index) {
   Impl::Robot& r = impl_->robot(robot);
-  const BlockLaserSpec& spec = r.spec.block_lasers.at(index);
-  const Eigen::Isometry3d T_world_sensor =
-      r.physics->linkPose(spec.link) * toIsometry(spec.pose_in_link);
-  BlockLaserCloudData data = blockLaserCloud(
-      spec, castRayCone(impl_->physics->rayWorld(), T_world_sensor, spec.rays),
-      &r.block_laser_rngs[index]);
-  data.time_s = timeS();
-  return data;
+  return readRayCone(*r.physics, r.spec.block_lasers.at(index), &r.block_laser_rngs.at(index),
+                     impl_->physics->rayWorld(), timeS(), blockLaserCloud);
 }
 
 ContactsData Simulation::readBumper(const std::string& robot, size_t index) const {

@@ -45,7 +45,8 @@ SimulatorNode::SimulatorNode(const Config& config, const bullet_sim::WorldSpec& 
   sim_config.cmd_vel_timeout_s = config.cmd_vel_timeout_s;
   sim_ = std::make_unique<bullet_sim::Simulation>(world, sim_config);
   runner_ = std::make_unique<SimRunner>(*sim_, nh, gazebo_nh, config.start_paused,
-                                        config.model_states_rate_hz, config.enable_ros_network);
+                                        config.model_states_rate_hz, config.enable_ros_network,
+                                        [this] { return pacer_.realTimeFactor(); });
   runner_->logSimulationWarnings();  // how the world's movable models were built
   releaseParserMemory();
   if (!config.robot_name.empty()) spawnStartRobot(config, runner_.get());

@@ -2,8 +2,10 @@
 // left or right), the triggered cameras (frames only when asked), <noise>, <distortion>,
 // 16-bit formats and camera_info's distortion and baseline, read from SDF as Gazebo does.
 #include <array>
+#include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -89,6 +91,36 @@ TEST(CameraPlugins, ATriggeredCameraHasATriggerTopicAndIsDueOnlyWhenTriggered) {
   for (int i = 0; i < 100; ++i) frames += cameraDue();
   EXPECT_EQ(frames, 0);
   EXPECT_THROW(sim.triggerCamera("m", 1), std::out_of_range);
+}
+
+TEST(CameraPlugins, ATriggeredFrameAskedWithADelayIsDueThatMuchSimTimeLater) {
+  // The node asks for a frame 4.5 ms of sim time on (a render's wall time at real time):
+  // with steps of 1 ms it is due at the 5th step, the first that ends 4.5 ms on, and a
+  // stretch of up to 100 steps stops there. A second frame asked 2 ms after the first,
+  // without a delay, is due at the next step and comes first.
+  const std::string sensor =
+      "<sensor type='camera' name='cam'>" + cameraElement("head", "") +
+      "<plugin name='p' filename='libgazebo_ros_triggered_camera.so'/></sensor>";
+  WorldSpec world;
+  world.models.push_back({"m", modelWith(sensor), Pose3()});
+  SimConfig config;
+  config.physics_step_s = 0.001;
+  Simulation sim(world, config);
+  sim.triggerCamera("m", 0, 0.0045);
+  unsigned taken = 0;
+  EXPECT_TRUE(sim.stepToNextReading(2, &taken).empty());
+  EXPECT_EQ(taken, 2u);
+  sim.triggerCamera("m", 0);
+  std::vector<DueSensor> due = sim.stepToNextReading(100, &taken);
+  EXPECT_EQ(taken, 1u);  // step 3: the frame asked without a delay
+  ASSERT_EQ(due.size(), 1u);
+  EXPECT_EQ(due[0].kind, SensorKind::Camera);
+  due = sim.stepToNextReading(100, &taken);
+  EXPECT_EQ(taken, 2u);  // step 5, 5 ms: the delayed frame
+  ASSERT_EQ(due.size(), 1u);
+  EXPECT_NEAR(sim.timeS(), 0.005, 1e-12);
+  EXPECT_THROW(sim.triggerCamera("m", 0, -0.001), std::invalid_argument);
+  EXPECT_THROW(sim.triggerCamera("m", 0, std::nan("")), std::invalid_argument);
 }
 
 TEST(CameraPlugins, AnUntriggeredCameraIgnoresTriggersAndHasNoTriggerTopic) {

@@ -3,6 +3,7 @@ pose helpers."""
 import math
 import threading
 import time
+import unittest
 import xmlrpc.client
 
 import rosgraph
@@ -71,6 +72,41 @@ def connect():
         rospy.wait_for_service("/gazebo/" + name, timeout=60)
         proxies[name] = rospy.ServiceProxy("/gazebo/" + name, srv_type)
     return proxies
+
+
+class GazeboServiceTest(unittest.TestCase):
+    """A test of the /gazebo services as node NODE_NAME: each test starts paused, with the
+    models it spawns (TEST_MODELS) deleted and the simulation reset. self.gz holds the
+    proxies (connect())."""
+    NODE_NAME = "gazebo_service_test"
+    TEST_MODELS = ()
+
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node(cls.NODE_NAME)
+        cls.gz = connect()
+
+    def setUp(self):
+        self.gz["pause_physics"]()
+        for name in self.TEST_MODELS:
+            self.gz["delete_model"](name)
+        self.gz["reset_simulation"]()
+
+    def call(self, service, *args, **kwargs):
+        return self.gz[service](*args, **kwargs)
+
+    def ok(self, service, *args, **kwargs):
+        """Calls `service` and checks that it succeeded."""
+        response = self.call(service, *args, **kwargs)
+        self.assertTrue(response.success, "%s: %s" % (service, response.status_message))
+        return response
+
+    def fails(self, service, fragment, *args, **kwargs):
+        """Calls `service` and checks that it failed with `fragment` in its message."""
+        response = self.call(service, *args, **kwargs)
+        self.assertFalse(response.success, "%s accepted a bad request" % service)
+        self.assertIn(fragment, response.status_message)
+        return response
 
 
 def yaw_pose(x, y, z=0.0, yaw=0.0):

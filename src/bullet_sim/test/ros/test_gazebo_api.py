@@ -4,7 +4,6 @@ gazebo_msgs clients as scripts written for Gazebo use them. The simulation is pa
 stepped; expected values are worked out by hand from the poses, masses and inertias set
 here."""
 import math
-import unittest
 
 import rospy
 import rostest
@@ -13,7 +12,7 @@ from geometry_msgs.msg import Point, Pose, Twist, Vector3, Wrench
 from sensor_msgs.msg import Imu
 
 from gazebo_api_client import (BOX_MASS_KG, BOX_URDF, ROTOR_URDF, SDF_BOX, SDF_STATIC_BOX,
-                               Latest, connect, rotate, simulator_connections,
+                               GazeboServiceTest, Latest, rotate, simulator_connections,
                                wait_for, yaw_of, yaw_pose)
 
 ROBOT = "burger"
@@ -22,31 +21,9 @@ TEST_MODELS = ("a", "b", "c", "d", "rotor")
 NAN = float("nan")
 
 
-class GazeboApi(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        rospy.init_node("gazebo_api_test")
-        cls.gz = connect()
-
-    def setUp(self):
-        self.gz["pause_physics"]()
-        for name in TEST_MODELS:
-            self.gz["delete_model"](name)
-        self.gz["reset_simulation"]()
-
-    def call(self, service, *args, **kwargs):
-        return self.gz[service](*args, **kwargs)
-
-    def ok(self, service, *args, **kwargs):
-        response = self.call(service, *args, **kwargs)
-        self.assertTrue(response.success, "%s: %s" % (service, response.status_message))
-        return response
-
-    def fails(self, service, fragment, *args, **kwargs):
-        response = self.call(service, *args, **kwargs)
-        self.assertFalse(response.success, "%s accepted a bad request" % service)
-        self.assertIn(fragment, response.status_message)
-        return response
+class GazeboApi(GazeboServiceTest):
+    NODE_NAME = "gazebo_api_test"
+    TEST_MODELS = TEST_MODELS
 
     def spawn_boxes(self):
         """Box a at (1, 2, 3) turned 0.5, box b at (2, 1, 3) turned -0.4 (in the air)."""

@@ -4,7 +4,6 @@
 paused and stepped; expected values are worked out by hand from the masses, inertias,
 torques and the world file (fixtures/lit.world)."""
 import time
-import unittest
 
 import dynamic_reconfigure.client
 import rospy
@@ -13,7 +12,7 @@ from gazebo_msgs.msg import ODEJointProperties
 from geometry_msgs.msg import Point, Pose, Vector3, Wrench
 from std_msgs.msg import ColorRGBA
 
-from gazebo_api_client import BOX_URDF, ROTOR_URDF, connect, yaw_pose
+from gazebo_api_client import BOX_URDF, ROTOR_URDF, GazeboServiceTest, yaw_pose
 
 NAN = float("nan")
 TEST_MODELS = ("box", "rotor", "capped")
@@ -51,32 +50,14 @@ def colour(r, g, b, a=1.0):
     return ColorRGBA(r, g, b, a)
 
 
-class GazeboProperties(unittest.TestCase):
+class GazeboProperties(GazeboServiceTest):
+    NODE_NAME = "gazebo_properties_test"
+    TEST_MODELS = TEST_MODELS
+
     @classmethod
     def setUpClass(cls):
-        rospy.init_node("gazebo_properties_test")
-        cls.gz = connect()
+        super().setUpClass()
         cls.physics = dynamic_reconfigure.client.Client("/gazebo", timeout=60)
-
-    def setUp(self):
-        self.gz["pause_physics"]()
-        for name in TEST_MODELS:
-            self.gz["delete_model"](name)
-        self.gz["reset_simulation"]()
-
-    def call(self, service, *args, **kwargs):
-        return self.gz[service](*args, **kwargs)
-
-    def ok(self, service, *args, **kwargs):
-        response = self.call(service, *args, **kwargs)
-        self.assertTrue(response.success, "%s: %s" % (service, response.status_message))
-        return response
-
-    def fails(self, service, fragment, *args, **kwargs):
-        response = self.call(service, *args, **kwargs)
-        self.assertFalse(response.success, "%s accepted a bad request" % service)
-        self.assertIn(fragment, response.status_message)
-        return response
 
     def set_link(self, link, mass, inertia, gravity=True, com=(0, 0, 0)):
         ixx, iyy, izz, ixy, ixz, iyz = inertia

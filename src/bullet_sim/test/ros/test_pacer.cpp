@@ -1,5 +1,6 @@
 // Pacer::stepsDue: one step at a time while the simulation keeps up with the wall clock,
 // as many as it is behind (at most a round) when it does not, a whole round unpaced.
+// Pacer::waitUntil after a stall: paces on from the stall's end, not catching it up.
 #include <chrono>
 #include <thread>
 
@@ -8,6 +9,73 @@
 #include "runner/pacer.h"
 
 using bullet_sim_node::Pacer;
+
+namespace {
+
+// A wall clock that moves only when slept on or stalled: steps take no wall time.
+struct FakeWall {
+  Pacer::Clock::time_point now{};
+  Pacer make(double real_time_factor) {
+    return Pacer(
+        real_time_factor, [this] { return now; },
+        [this](Pacer::Clock::time_point t) { now = std::max(now, t); });
+  }
+  void pass(double s) {
+    now += std::chrono::duration_cast<Pacer::Clock::duration>(std::chrono::duration<double>(s));
+  }
+  double secondsSince(Pacer::Clock::time_point t) const {
+    return std::chrono::duration<double>(now - t).count();
+  }
+};
+
+// The node's loop (SimulatorNode::spinOnce) for `wall_s` of wall time from `*sim_s`:
+// the steps due, then the wait. Returns the sim time it reached.
+double run(Pacer* pacer, FakeWall* wall, double sim_s, double wall_s) {
+  constexpr double kStepS = 0.001;
+  const Pacer::Clock::time_point start = wall->now;
+  while (wall->secondsSince(start) < wall_s) {
+    sim_s += pacer->stepsDue(sim_s, kStepS, 5) * kStepS;
+    pacer->waitUntil(sim_s);
+  }
+  return sim_s;
+}
+
+// The sim time run in `wall_s` of wall time at `real_time_factor`, after `run_s` of wall
+// time paced and then a stall of `stall_s` (the wall clock moves, the simulation does
+// not).
+double simTimeAfterStall(double real_time_factor, double run_s, double stall_s,
+                         double wall_s) {
+  FakeWall wall;
+  Pacer pacer = wall.make(real_time_factor);
+  const double before = run(&pacer, &wall, 0.0, run_s);
+  EXPECT_NEAR(before, run_s * real_time_factor, 0.0015);
+  wall.pass(stall_s);
+  return run(&pacer, &wall, before, wall_s) - before;
+}
+
+}  // namespace
+
+TEST(Pacer, AfterAStallPacesOnFromNowWithoutCatchingUp) {
+  // Real time, a stall of 1 s, then 0.1 s of wall time: 0.1 s of sim time, as Gazebo's
+  // world waits from the previous step's wall time, not the 1.1 s that catching up would
+  // run. At most the lag still caught up (Pacer::kMaxLagS) and a step more.
+  const double sim_s = simTimeAfterStall(1.0, 1.0, 1.0, 0.1);
+  EXPECT_GE(sim_s, 0.1 - 0.0015);
+  EXPECT_LE(sim_s, 0.1 + Pacer::kMaxLagS + 0.0015);
+}
+
+TEST(Pacer, AfterAStallKeepsTheFactor) {
+  // Four times real time: 0.1 s of wall time after a 0.5 s stall gives 0.4 s of sim time.
+  const double sim_s = simTimeAfterStall(4.0, 0.2, 0.5, 0.1);
+  EXPECT_GE(sim_s, 0.4 - 0.0015);
+  EXPECT_LE(sim_s, 0.4 + 4 * Pacer::kMaxLagS + 0.0015);
+}
+
+TEST(Pacer, ALateWakeWithinTheToleranceIsCaughtUp) {
+  // A sleep that wakes 5 ms late (within Pacer::kMaxLagS) costs no sim time: after it,
+  // 0.1 s of wall time has run 0.105 s of sim time, the factor over the whole stretch.
+  EXPECT_NEAR(simTimeAfterStall(1.0, 0.1, 0.005, 0.1), 0.105, 0.0015);
+}
 
 TEST(Pacer, UnpacedTakesWholeRounds) {
   const Pacer pacer(0.0);

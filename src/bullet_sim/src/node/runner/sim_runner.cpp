@@ -5,6 +5,7 @@
 #include <malloc.h>
 
 #include <cmath>
+#include <utility>
 
 #include <ros/console.h>
 #include <rosgraph_msgs/Clock.h>
@@ -26,10 +27,14 @@ constexpr double kRoundS = 0.005;
 
 SimRunner::SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
                      const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz,
-                     bool state_topics)
+                     bool state_topics, std::function<double()> real_time_factor)
     : sim_(sim),
       nh_(nh),
-      cameras_(sim, queue_),
+      // Paused, Gazebo's world does not step on while a frame renders.
+      cameras_(sim, queue_,
+               [this, real_time_factor = std::move(real_time_factor)] {
+                 return paused_ ? 0.0 : real_time_factor();
+               }),
       paused_(paused) {
   clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
   if (state_topics) {

@@ -11,6 +11,7 @@
 #include <ros/node_handle.h>
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -24,10 +25,11 @@ namespace bullet_sim_node {
 class SimRunner {
  public:
   /// Without `state_topics`, /gazebo/model_states and link_states are not advertised
-  /// (enable_ros_network false).
+  /// (enable_ros_network false). `real_time_factor()` reads the pace: the sim time a
+  /// render takes in Gazebo (CameraIo), none while paused.
   SimRunner(bullet_sim::Simulation& sim, const ros::NodeHandle& nh,
             const ros::NodeHandle& gazebo_nh, bool paused, double model_states_rate_hz,
-            bool state_topics);
+            bool state_topics, std::function<double()> real_time_factor);
 
   /// Adds a robot to the simulation and advertises its topics under `robot_namespace`;
   /// its frames get the tf_prefix found from that namespace.

@@ -12,8 +12,10 @@
 #include <boost/make_shared.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <stdexcept>
+#include <utility>
 
 namespace bullet_sim_node {
 namespace {
@@ -59,8 +61,13 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
   return msg;
 }
 
-CameraIo::CameraIo(bullet_sim::Simulation& sim, PublishQueue& queue)
-    : sim_(sim), queue_(queue), renderer_(sim), depth_(queue) {
+CameraIo::CameraIo(bullet_sim::Simulation& sim, PublishQueue& queue,
+                   std::function<double()> real_time_factor)
+    : sim_(sim),
+      queue_(queue),
+      renderer_(sim),
+      depth_(queue),
+      real_time_factor_(std::move(real_time_factor)) {
   logNewRendererWarnings();
 }
 
@@ -89,7 +96,9 @@ void CameraIo::addRobot(const std::string& robot, const ros::NodeHandle& robot_n
           cameraTopic(camera.camera_name, camera.trigger_topic), kTriggerQueueSize,
           [this, robot, index](const std_msgs::Empty::ConstPtr&) {
             try {
-              sim_.triggerCamera(robot, index);
+              // Gazebo's world steps on while its render thread draws the frame.
+              const double rtf = std::max(0.0, real_time_factor_());
+              sim_.triggerCamera(robot, index, render_wall_s_ * rtf);
             } catch (const std::out_of_range&) {  // the robot was deleted meanwhile
             }
           });
@@ -118,7 +127,10 @@ void CameraIo::publish(const std::vector<bullet_sim::DueSensor>& due) {
     rendered.push_back(&camera);
   }
   if (!frames.empty()) {
+    const auto start = std::chrono::steady_clock::now();
     renderer_.renderTogether(&frames);
+    render_wall_s_ =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (size_t i = 0; i < frames.size(); ++i) rendered[i]->render_error = frames[i].error;
   }
   for (Watched& camera : cameras) publish(&camera);

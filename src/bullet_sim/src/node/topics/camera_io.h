@@ -14,6 +14,7 @@
 #include <sensor_msgs/CameraInfo.h>
 
 #include <exception>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -37,8 +38,12 @@ sensor_msgs::CameraInfoPtr toMsg(const bullet_sim::CameraInfoData& info,
 class CameraIo {
  public:
   /// `sim` and `queue` (which the messages leave through) must outlive this object.
-  /// A triggered camera's trigger topic asks `sim` for its frames (Simulation::triggerCamera).
-  CameraIo(bullet_sim::Simulation& sim, PublishQueue& queue);
+  /// A triggered camera's trigger topic asks `sim` for its frames (Simulation::triggerCamera)
+  /// due the sim time that Gazebo's world steps on while its render thread draws a frame:
+  /// the wall time of the last rendering round times `real_time_factor()` (the pace; 0,
+  /// unpaced, asks for the next step).
+  CameraIo(bullet_sim::Simulation& sim, PublishQueue& queue,
+           std::function<double()> real_time_factor);
   CameraIo(const CameraIo&) = delete;
   CameraIo& operator=(const CameraIo&) = delete;
 
@@ -87,6 +92,8 @@ class CameraIo {
   DepthCameraIo depth_;  ///< the depth topics of the depth cameras among them
   std::map<std::string, std::vector<Topics>> cameras_;  ///< per robot, by camera index
   size_t warnings_logged_ = 0;
+  std::function<double()> real_time_factor_;
+  double render_wall_s_ = 0;  ///< the wall time the last round of frames took to render
 };
 
 }  // namespace bullet_sim_node

@@ -6,14 +6,6 @@
 namespace bullet_sim_node {
 namespace {
 
-geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
-  geometry_msgs::Vector3 msg;
-  msg.x = v.x();
-  msg.y = v.y();
-  msg.z = v.z();
-  return msg;
-}
-
 geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q) {
   geometry_msgs::Quaternion msg;
   msg.w = q.w();
@@ -30,6 +22,21 @@ void setDiagonal(boost::array<double, 9>& covariance, double variance) {
 
 }  // namespace
 
+std_msgs::Header toHeader(double time_s, const std::string& frame_id) {
+  std_msgs::Header header;
+  header.stamp.fromSec(time_s);
+  header.frame_id = frame_id;
+  return header;
+}
+
+geometry_msgs::Vector3 toMsg(const Eigen::Vector3d& vector) {
+  geometry_msgs::Vector3 msg;
+  msg.x = vector.x();
+  msg.y = vector.y();
+  msg.z = vector.z();
+  return msg;
+}
+
 geometry_msgs::Pose toMsg(const bullet_sim::Pose3& pose) {
   geometry_msgs::Pose msg;
   msg.position.x = pose.position.x();
@@ -41,8 +48,8 @@ geometry_msgs::Pose toMsg(const bullet_sim::Pose3& pose) {
 
 geometry_msgs::Twist toMsg(const bullet_sim::Twist3& twist) {
   geometry_msgs::Twist msg;
-  msg.linear = toVector3(twist.linear);
-  msg.angular = toVector3(twist.angular);
+  msg.linear = toMsg(twist.linear);
+  msg.angular = toMsg(twist.angular);
   return msg;
 }
 
@@ -64,8 +71,7 @@ bullet_sim::Twist3 fromMsg(const geometry_msgs::Twist& twist) {
 
 sensor_msgs::LaserScan toMsg(const bullet_sim::LaserScanData& scan) {
   sensor_msgs::LaserScan msg;
-  msg.header.stamp.fromSec(scan.time_s);
-  msg.header.frame_id = scan.frame_id;
+  msg.header = toHeader(scan.time_s, scan.frame_id);
   msg.angle_min = scan.angle_min;
   msg.angle_max = scan.angle_max;
   msg.angle_increment = scan.angle_increment;
@@ -80,11 +86,10 @@ sensor_msgs::LaserScan toMsg(const bullet_sim::LaserScanData& scan) {
 
 sensor_msgs::Imu toMsg(const bullet_sim::ImuData& imu) {
   sensor_msgs::Imu msg;
-  msg.header.stamp.fromSec(imu.time_s);
-  msg.header.frame_id = imu.frame_id;
+  msg.header = toHeader(imu.time_s, imu.frame_id);
   msg.orientation = toQuaternion(imu.orientation);
-  msg.angular_velocity = toVector3(imu.angular_velocity);
-  msg.linear_acceleration = toVector3(imu.linear_acceleration);
+  msg.angular_velocity = toMsg(imu.angular_velocity);
+  msg.linear_acceleration = toMsg(imu.linear_acceleration);
   setDiagonal(msg.orientation_covariance, imu.orientation_cov);
   setDiagonal(msg.angular_velocity_covariance, imu.angular_velocity_cov);
   setDiagonal(msg.linear_acceleration_covariance, imu.linear_acceleration_cov);
@@ -106,8 +111,7 @@ geometry_msgs::WrenchStamped toMsg(const bullet_sim::WrenchData& wrench) {
 
 nav_msgs::Odometry toMsg(const bullet_sim::OdometryData& odom) {
   nav_msgs::Odometry msg;
-  msg.header.stamp.fromSec(odom.time_s);
-  msg.header.frame_id = odom.frame_id;
+  msg.header = toHeader(odom.time_s, odom.frame_id);
   msg.child_frame_id = odom.child_frame_id;
   msg.pose.pose = toMsg(odom.pose);
   msg.twist.twist = toMsg(odom.twist_in_child);
@@ -129,8 +133,7 @@ sensor_msgs::JointState toMsg(const bullet_sim::JointStateData& joints) {
 
 geometry_msgs::TransformStamped toTransformMsg(const bullet_sim::OdometryData& odom) {
   geometry_msgs::TransformStamped msg;
-  msg.header.stamp.fromSec(odom.time_s);
-  msg.header.frame_id = odom.frame_id;
+  msg.header = toHeader(odom.time_s, odom.frame_id);
   msg.child_frame_id = odom.child_frame_id;
   msg.transform.translation.x = odom.pose.position.x();
   msg.transform.translation.y = odom.pose.position.y();

@@ -12,12 +12,16 @@
 #include <sensor_msgs/Imu.h>
 #include <sensor_msgs/JointState.h>
 #include <sensor_msgs/LaserScan.h>
+#include <std_msgs/Header.h>
 
 #include <optional>
 #include <string>
 
 namespace bullet_sim_node {
 
+/// The header of a reading taken at sim time `time_s` in frame `frame_id`.
+std_msgs::Header toHeader(double time_s, const std::string& frame_id);
+geometry_msgs::Vector3 toMsg(const Eigen::Vector3d& vector);
 geometry_msgs::Pose toMsg(const bullet_sim::Pose3& pose);
 geometry_msgs::Twist toMsg(const bullet_sim::Twist3& twist);
 /// Normalises the quaternion; a zero quaternion (an unset message) becomes the identity.

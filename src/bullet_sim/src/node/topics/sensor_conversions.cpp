@@ -1,22 +1,16 @@
 #include "topics/sensor_conversions.h"
 
+#include "topics/conversions.h"
+
 #include <sstream>
 
 namespace bullet_sim_node {
 namespace {
 
-geometry_msgs::Vector3 vector3(const Eigen::Vector3d& v) {
-  geometry_msgs::Vector3 out;
-  out.x = v.x();
-  out.y = v.y();
-  out.z = v.z();
-  return out;
-}
-
 geometry_msgs::Wrench wrench(const Eigen::Vector3d& force, const Eigen::Vector3d& torque) {
   geometry_msgs::Wrench out;
-  out.force = vector3(force);
-  out.torque = vector3(torque);
+  out.force = toMsg(force);
+  out.torque = toMsg(torque);
   return out;
 }
 
@@ -24,8 +18,7 @@ geometry_msgs::Wrench wrench(const Eigen::Vector3d& force, const Eigen::Vector3d
 
 sensor_msgs::Range toMsg(const bullet_sim::RangeData& range) {
   sensor_msgs::Range msg;
-  msg.header.stamp.fromSec(range.time_s);
-  msg.header.frame_id = range.frame_id;
+  msg.header = toHeader(range.time_s, range.frame_id);
   msg.radiation_type = range.infrared ? sensor_msgs::Range::INFRARED : sensor_msgs::Range::ULTRASOUND;
   msg.field_of_view = range.field_of_view;
   msg.min_range = range.min_range;
@@ -36,8 +29,7 @@ sensor_msgs::Range toMsg(const bullet_sim::RangeData& range) {
 
 sensor_msgs::PointCloud toMsg(const bullet_sim::BlockLaserCloudData& cloud) {
   sensor_msgs::PointCloud msg;
-  msg.header.stamp.fromSec(cloud.time_s);
-  msg.header.frame_id = cloud.frame_id;
+  msg.header = toHeader(cloud.time_s, cloud.frame_id);
   msg.points.resize(cloud.points.size());
   for (size_t i = 0; i < cloud.points.size(); ++i) {
     msg.points[i].x = cloud.points[i].x();
@@ -51,8 +43,7 @@ sensor_msgs::PointCloud toMsg(const bullet_sim::BlockLaserCloudData& cloud) {
 
 gazebo_msgs::ContactsState toMsg(const bullet_sim::ContactsData& contacts) {
   gazebo_msgs::ContactsState msg;
-  msg.header.stamp.fromSec(contacts.time_s);
-  msg.header.frame_id = contacts.frame_id;
+  msg.header = toHeader(contacts.time_s, contacts.frame_id);
   for (size_t i = 0; i < contacts.states.size(); ++i) {
     const bullet_sim::ContactStateData& s = contacts.states[i];
     gazebo_msgs::ContactState state;
@@ -65,8 +56,8 @@ gazebo_msgs::ContactsState toMsg(const bullet_sim::ContactsData& contacts) {
     state.info = info.str();
     for (size_t j = 0; j < s.forces.size(); ++j) {
       state.wrenches.push_back(wrench(s.forces[j], s.torques[j]));
-      state.contact_positions.push_back(vector3(s.positions[j]));
-      state.contact_normals.push_back(vector3(s.normals[j]));
+      state.contact_positions.push_back(toMsg(s.positions[j]));
+      state.contact_normals.push_back(toMsg(s.normals[j]));
       state.depths.push_back(s.depths[j]);
     }
     state.total_wrench = wrench(s.total_force, s.total_torque);
