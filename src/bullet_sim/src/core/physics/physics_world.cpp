@@ -61,6 +61,28 @@ bool closesFasterThan(const btPersistentManifold& manifold, double speed_mps) {
   return false;
 }
 
+std::vector<std::pair<btManifoldPoint*, btScalar>> capPushOut(btDispatcher* dispatcher, double erp,
+                                                               double dt_s, double max_vel_mps) {
+  std::vector<std::pair<btManifoldPoint*, btScalar>> capped;
+  if (!(erp > 0) || !(dt_s > 0)) return capped;
+  const btScalar min_distance = static_cast<btScalar>(-max_vel_mps * dt_s / erp);
+  for (int i = 0; i < dispatcher->getNumManifolds(); ++i) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(i);
+    for (int j = 0; j < manifold->getNumContacts(); ++j) {
+      btManifoldPoint& cp = manifold->getContactPoint(j);
+      if (cp.m_distance1 < min_distance) {
+        capped.emplace_back(&cp, cp.m_distance1);
+        cp.m_distance1 = min_distance;
+      }
+    }
+  }
+  return capped;
+}
+
+void restoreDepths(const std::vector<std::pair<btManifoldPoint*, btScalar>>& capped) {
+  for (const auto& [cp, distance] : capped) cp->m_distance1 = distance;
+}
+
 void ImpactAwareWorld::solveConstraints(btContactSolverInfo& info) {
   bool impact = false;
   btDispatcher* dispatcher = getDispatcher();
@@ -73,7 +95,11 @@ void ImpactAwareWorld::solveConstraints(btContactSolverInfo& info) {
   info.m_numIterations = steps_since_impact_ <= kStepsAfterImpact
                              ? std::max(kImpactIterations, iterations_)
                              : iterations_;
+  // The solver reads the depths once, to set up its contacts; contact sensors read them after
+  // the step, as found.
+  const auto capped = capPushOut(dispatcher, info.m_erp, info.m_timeStep, kContactMaxVelMps);
   btDiscreteDynamicsWorld::solveConstraints(info);
+  restoreDepths(capped);
 }
 
 CollisionBackend::CollisionBackend(int pool_size) : config(poolOf(pool_size)) {}

@@ -2,6 +2,7 @@
 #define BULLET_SIM_CORE_PHYSICS_WORLD_H
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
@@ -58,13 +59,29 @@ constexpr int kImpactIterations = 100;
 constexpr double kImpactApproachMps = 0.5;
 constexpr int kStepsAfterImpact = 3;
 
+/// Gazebo's ODE pushes overlapping bodies apart at erp x depth / dt, but no faster than the
+/// contact's max_vel: the body's surface `<contact><ode><max_vel>` (SDF default 0.01 m/s),
+/// truncated by the world's contact_max_correcting_vel (default 100). Bullet's contacts push
+/// apart at erp x depth / dt uncapped (its split impulse only takes over past 4 cm), so a box
+/// placed 6.8 mm inside a wall would leave it at 1.4 m/s. The surface's own max_vel is not
+/// read: every contact gets the default.
+constexpr double kContactMaxVelMps = 0.01;
+
+/// Caps the penetration of every contact of `dispatcher` at the depth whose Baumgarte push-out
+/// (`erp` x depth / `dt_s`) is `max_vel_mps`; returns the contacts changed with their depths,
+/// for restoreDepths.
+std::vector<std::pair<btManifoldPoint*, btScalar>> capPushOut(btDispatcher* dispatcher, double erp,
+                                                               double dt_s, double max_vel_mps);
+void restoreDepths(const std::vector<std::pair<btManifoldPoint*, btScalar>>& capped);
+
 /// A contact of `manifold` whose two bodies close faster than `speed_mps` along its normal.
 bool closesFasterThan(const btPersistentManifold& manifold, double speed_mps);
 
 /// btDiscreteDynamicsWorld that gives a step with an impact (closesFasterThan
 /// kImpactApproachMps), and the kStepsAfterImpact steps after it, at least
 /// kImpactIterations solver iterations, any other the iterations set (kSolverIterations
-/// unless set_physics_properties changed them).
+/// unless set_physics_properties changed them). Contacts push overlapping bodies apart no
+/// faster than kContactMaxVelMps (capPushOut), as ODE's max_vel.
 class ImpactAwareWorld : public btDiscreteDynamicsWorld {
  public:
   using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
