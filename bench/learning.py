@@ -12,12 +12,15 @@ Medians of N rounds (default 3), each figure measured in a process of its own:
   ray      2 Ray workers through bullet_sim.batch (build/learning_venv's Python; skipped
            without it): total agent steps over the wall time of the batch, actor start-up
            included, and the workers' own steps/s
+  ros      the Gazebo way measured once: roslaunch turtlebot3_gazebo
+           roundTrack_simulation.launch gui:=false (master on BENCH_PORT_BASE, default 11470),
+           an agent sending a random action on /cmd_vel each time a /scan arrives, 10 s
   mujoco   gymnasium.make('Ant-v5') on MuJoCo 4.0.0 (build/bench_venv, `scripts/setup.sh
            --bench`): steps/s and steps per CPU second
 Ends with the target line: >= 1000 agent steps/s per core (200x Gazebo's 5/s) at 1 ms and at
 5 ms physics steps, and the load average (the machine's cores are shared).
 
-Usage: bench/learning.py [--rounds N] [--seconds S]    (needs `make build`)
+Usage: bench/learning.py [--rounds N] [--seconds S] [--ros-seconds S]  (needs `make build`)
 """
 import argparse
 import json
@@ -181,6 +184,8 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--rounds", type=int, default=3)
     p.add_argument("--seconds", type=float, default=3.0, help="timed wall seconds per figure")
+    p.add_argument("--ros-seconds", type=float, default=10.0,
+                   help="the Gazebo way through ROS, measured once (0: derived only)")
     p.add_argument("--part", nargs=2, help=argparse.SUPPRESS)
     a = p.parse_args()
     if a.part:
@@ -204,6 +209,10 @@ def main():
         runs.append(("mujoco", BENCH_PYTHON, plain_env, "mujoco", 0))
     results = {name: [] for name, *_ in runs}
     load_before = ros_bench.load_average()
+    ros = None
+    if a.ros_seconds > 0:
+        ros = measure(sys.executable, env, "ros", 0, a.ros_seconds)["steps_per_s"]
+        print("ros %.3f" % ros, flush=True)
     for r in range(a.rounds):
         order = runs if r % 2 == 0 else list(reversed(runs))
         for name, python, penv, part, arg in order:
@@ -237,6 +246,9 @@ def main():
         print("| 2 Ray workers | skipped: make learning | |")
     print("| the Gazebo way: ROS at real-time factor 1, an action per 5 Hz scan (derived) "
           "| %.0f | |" % GAZEBO_WAY)
+    if ros is not None:
+        print("| the same measured: roundTrack_simulation.launch gui:=false, an agent sending "
+              "/cmd_vel on each /scan, %.0f s | %.2f | |" % (a.ros_seconds, ros))
     if have_mujoco:
         v = results["mujoco"]
         print("| MuJoCo %s, gymnasium %s Ant-v5 (%.2f s per step, 5 physics steps, no lidar) "
