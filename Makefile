@@ -33,9 +33,11 @@ test: build
 screenshots: build
 	@scripts/screenshots.sh
 
-# bullet_sim against MuJoCo and PyBullet (installed into build/bench_venv), one table.
+# bullet_sim against MuJoCo and PyBullet (installed into build/bench_venv), one table; then
+# the learning environment's agent steps per second (bench/learning.py).
 bench: build
 	@bench/compare
+	@bench/learning.py
 
 # torch, Stable-Baselines3 and Ray into build/learning_venv (large: never in `make setup`).
 learning: build
