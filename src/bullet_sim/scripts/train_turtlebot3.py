@@ -10,8 +10,9 @@ Needs `make learning` (torch and Stable-Baselines3 in build/learning_venv):
 
 Every --eval-every environment steps the deterministic policy runs --eval-episodes episodes
 (seeds 10000.., the same ones each time) and their success rate (goal reached before a
-collision or the 500-action limit) is written to progress.csv with the wall time and the
-steps per second; training stops once the rate reaches --target. The learning curve is
+collision or the 500-action limit) is written to progress.csv with the wall time, the time
+spent evaluating and the training's environment steps per second (evaluation left out);
+training stops once the rate reaches --target. The learning curve is
 drawn into learning_curve.png and the model saved as model.zip.
 """
 
@@ -95,6 +96,7 @@ def main(argv=None):
             super().__init__()
             self.next_eval = args.eval_every
             self.rows = []
+            self.eval_s = 0.0
 
         def _on_training_start(self):
             self.record()  # the untrained policy
@@ -106,10 +108,14 @@ def main(argv=None):
             return self.record() < args.target
 
         def record(self):
+            t0 = time.time()
             rate, ret, length = evaluate(self.model, eval_env, args.eval_episodes, 10_000)
+            self.eval_s += time.time() - t0
             wall = time.time() - start
+            train = wall - self.eval_s
             row = {'env_steps': self.num_timesteps, 'wall_s': round(wall, 1),
-                   'steps_per_s': round(self.num_timesteps / max(wall, 1e-9), 1),
+                   'eval_s': round(self.eval_s, 1), 'train_s': round(train, 1),
+                   'train_steps_per_s': round(self.num_timesteps / max(train, 1e-9), 1),
                    'success_rate': rate, 'mean_return': round(ret, 2),
                    'mean_length': round(length, 1)}
             self.rows.append(row)
