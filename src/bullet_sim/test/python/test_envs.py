@@ -299,3 +299,50 @@ def test_continuous_actions_match_the_discrete_ones_at_their_points():
     yaws = [env.step(np.array([1.0], dtype=np.float32))[4]['pose'][2] for _ in range(4)]
     for k in (2, 3):
         assert yaws[k] - yaws[k - 1] == pytest.approx(0.3, abs=0.003)
+
+
+# ------------------------------------------------ ROBOTIS's stage worlds (a clone) ----
+
+def _stage_worlds():
+    from bullet_sim.envs.turtlebot3 import find_packages
+    import os
+    for pkg in find_packages('turtlebot3_gazebo'):
+        if os.path.isfile(os.path.join(pkg, 'worlds', 'turtlebot3_stage_1.world')):
+            return pkg
+    return None
+
+
+needs_stages = pytest.mark.skipif(
+    _stage_worlds() is None,
+    reason="ROBOTIS's turtlebot3_simulations (its turtlebot3_gazebo with the stage worlds) "
+           'is not on ROS_PACKAGE_PATH')
+
+
+@needs_stages
+@pytest.mark.parametrize('stage', [1, 2, 3, 4])
+def test_stage_worlds_pass_the_checker_with_robotis_spawn_and_first_goal(stage):
+    from gymnasium.utils.env_checker import check_env
+    env = TurtleBot3GoalEnv(world=f'stage_{stage}')
+    obs, info = env.reset(seed=0)
+    assert info['goal'] == task.STAGE_FIRST_GOAL
+    assert info['pose'][:2] == pytest.approx((-0.7 if stage == 4 else 0.0, 0.0), abs=1e-3)
+    check_env(env, skip_render_check=True)
+
+
+@needs_stages
+def test_stage_1_straight_to_the_first_goal():
+    # from the spawn (0, 0) facing +x, the first goal (0.6, 0) is 0.6 m ahead: reached
+    # after (0.6 - 0.2) / 0.03 = 13.3 actions, give or take one for the wheels' start
+    env = TurtleBot3GoalEnv(world='stage_1')
+    obs, info = env.reset(seed=0)
+    assert obs[24] == pytest.approx(0.0, abs=1e-3) and obs[25] == pytest.approx(0.6, abs=1e-3)
+    for k in range(1, 30):
+        obs, reward, terminated, truncated, info = env.step(2)
+        if terminated:
+            break
+    assert info['is_success'] and 13 <= k <= 16
+    # the goal stays after a collision-free reset only when it was not reached: reached
+    # here, the next episode draws a new one by ROBOTIS's rules
+    env.reset()
+    g = env.goal
+    assert abs(g[0] - 0.6) >= 1 or abs(g[1]) >= 1

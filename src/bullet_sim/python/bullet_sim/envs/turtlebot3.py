@@ -14,7 +14,7 @@ import re
 import shutil
 import subprocess
 import xml.etree.ElementTree as ET
-from typing import Any, Dict, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import gymnasium as gym
 import numpy as np
@@ -42,9 +42,10 @@ _WORLDS = {
 }
 
 
-def find_package(name: str) -> Optional[str]:
-    """The folder of ROS package `name` on ROS_PACKAGE_PATH (as rospack finds it: the first
-    root that has it, packages not searched inside), None when it is not there."""
+def find_packages(name: str) -> List[str]:
+    """The folders of ROS package `name` on ROS_PACKAGE_PATH, in its order (rospack takes
+    the first; an overlay's clone and this workspace may both have one of a name)."""
+    found = []
     for root in os.environ.get('ROS_PACKAGE_PATH', '').split(os.pathsep):
         if not root or not os.path.isdir(root):
             continue
@@ -56,27 +57,49 @@ def find_package(name: str) -> Optional[str]:
                 dirnames[:] = []
                 try:
                     if ET.parse(os.path.join(dirpath, 'package.xml')).findtext('name') == name:
-                        return dirpath
+                        found.append(dirpath)
                 except ET.ParseError:
                     pass
                 continue
             dirnames[:] = [d for d in dirnames if not d.startswith('.')]
-    return None
+    return found
+
+
+def find_package(name: str) -> Optional[str]:
+    """The folder of ROS package `name` as rospack finds it (the first on ROS_PACKAGE_PATH),
+    None when it is not there."""
+    found = find_packages(name)
+    return found[0] if found else None
+
+
+def _model_paths(packages: List[str]) -> List[str]:
+    """GAZEBO_MODEL_PATH, then the `models` folders the packages export to gazebo_ros
+    (<gazebo_ros gazebo_model_path="${prefix}/models"/>), as gazebo_ros adds them."""
+    paths = [p for p in os.environ.get('GAZEBO_MODEL_PATH', '').split(os.pathsep) if p]
+    for pkg in packages:
+        try:
+            exports = ET.parse(os.path.join(pkg, 'package.xml')).findall('export/gazebo_ros')
+        except ET.ParseError:
+            continue
+        for export in exports:
+            if export.get('gazebo_model_path'):
+                paths.append(export.get('gazebo_model_path').replace('${prefix}', pkg))
+    return paths
 
 
 def world_file(world: str) -> Tuple[str, Any, Tuple[float, float, float]]:
     """(path, goal rule, spawn x y yaw) of a world given by short name or path."""
     if world in _WORLDS:
         package, rel, rule, spawn = _WORLDS[world]
-        root = find_package(package)
-        path = os.path.join(root, rel) if root else None
-        if path is None or not os.path.isfile(path):
-            # our turtlebot3_gazebo has the round track; ROBOTIS's has the stages
-            raise FileNotFoundError(
-                f"world '{world}': no {rel} in a package '{package}' on ROS_PACKAGE_PATH "
-                '(source devel/setup.bash; the stage worlds need a clone of ROBOTIS\'s '
-                'turtlebot3_simulations in an overlay)')
-        return path, rule, spawn
+        for root in find_packages(package):
+            path = os.path.join(root, rel)
+            if os.path.isfile(path):
+                return path, rule, spawn
+        # our turtlebot3_gazebo has the round track; ROBOTIS's has the stages
+        raise FileNotFoundError(
+            f"world '{world}': no {rel} in a package '{package}' on ROS_PACKAGE_PATH "
+            '(source devel/setup.bash; the stage worlds need a clone of ROBOTIS\'s '
+            'turtlebot3_simulations on it)')
     if not os.path.isfile(world):
         raise FileNotFoundError(f"world '{world}': neither a known name "
                                 f'({", ".join(_WORLDS)}) nor a file')
@@ -135,7 +158,8 @@ class TurtleBot3GoalEnv(gym.Env):
     world: 'roundTrack', 'stage_1' .. 'stage_4' or a world file. Start and goal: on the
     round track and other worlds, the robot starts at a random free place and heading and
     the goal is a free place `goal_distance` away in sight; on the stage worlds the robot
-    starts at ROBOTIS's spawn and goals follow ROBOTIS's rules.
+    starts at ROBOTIS's spawn and goals follow ROBOTIS's rules: (0.6, 0) first, kept across
+    episodes until reached, then drawn away from the obstacles and the last goal.
     """
 
     metadata = {'render_modes': ['rgb_array'], 'render_fps': 5}
@@ -163,7 +187,8 @@ class TurtleBot3GoalEnv(gym.Env):
         self.physics_step = float(physics_step)
         self.steps_per_action = int(round(steps))
         self.world_path, self._goal_rule, self._spawn = world_file(world)
-        self._world = bullet_sim.World.from_file(self.world_path)
+        self._world = bullet_sim.World.from_file(
+            self.world_path, model_paths=_model_paths(find_packages('turtlebot3_gazebo')))
         self._robot = bullet_sim.Robot.from_urdf(burger_urdf(scan_samples), 'turtlebot3_burger')
         self.scan_samples = int(scan_samples)
 
@@ -199,6 +224,7 @@ class TurtleBot3GoalEnv(gym.Env):
         self._goal: Tuple[float, float] = task.STAGE_FIRST_GOAL
         self._start_distance = 1.0
         self._goals_reached = 0
+        self._episodes = 0
 
     # -- the simulation --------------------------------------------------------------
 
@@ -266,8 +292,14 @@ class TurtleBot3GoalEnv(gym.Env):
         self._sim.set_model_state(ROBOT, (float(x), float(y), 0.0, float(yaw)))
         if 'goal' in options:
             self._goal = (float(options['goal'][0]), float(options['goal'][1]))
-        else:
+        elif self._goal_rule == 'free':
             self._goal = self._new_goal(float(x), float(y))
+        elif seed is not None or not self._episodes:
+            # ROBOTIS's first goal of a run; then it stays until reached
+            self._goal = task.STAGE_FIRST_GOAL
+        elif self._goals_reached:
+            self._goal = self._new_goal(float(x), float(y))
+        self._episodes += 1
         self._sim.set_cmd_vel(ROBOT, 0.0, 0.0)
         self._goals_reached = 0
         obs, info = self._observe()
