@@ -6,16 +6,13 @@ plugin (topic /box/truth, xyzOffset 1 2 3, updateRate 100) and a force plugin (t
 /box/push). A wrench of 4 N along x pushes it for 1 s of sim time: a = F / m = 2 m/s^2,
 so the ground truth then reads v = 2 m/s and x = a t^2 / 2 = 1 m, plus the offset.
 """
-import threading
 import time
-import unittest
 
 import rospy
 import rostest
-from bullet_sim.srv import StepSimulation
-from gazebo_msgs.srv import SpawnModel
-from geometry_msgs.msg import Pose, Wrench
+from geometry_msgs.msg import Wrench
 from nav_msgs.msg import Odometry
+from spawned_model_test import TIMEOUT_S, SpawnedModelTest
 
 BOX = """<robot name="box"><link name="body"><inertial><mass value="2"/>
 <inertia ixx="0.013333" ixy="0" ixz="0" iyy="0.013333" iyz="0" izz="0.013333"/></inertial>
@@ -24,34 +21,20 @@ BOX = """<robot name="box"><link name="body"><inertial><mass value="2"/>
 <topicName>truth</topicName><xyzOffset>1 2 3</xyzOffset><updateRate>100</updateRate>
 </plugin><plugin name="push" filename="libgazebo_ros_force.so"><bodyName>body</bodyName>
 <topicName>push</topicName></plugin></gazebo></robot>"""
-TIMEOUT_S = 30.0
 
 
-class ModelPlugins(unittest.TestCase):
+class ModelPlugins(SpawnedModelTest):
+    node_name = 'model_plugins_test'
+
     def setUp(self):
-        rospy.init_node('model_plugins_test')
-        for name in ('/gazebo/spawn_urdf_model', '/gazebo/step_simulation'):
-            rospy.wait_for_service(name, TIMEOUT_S)
-        self.step = rospy.ServiceProxy('/gazebo/step_simulation', StepSimulation)
-        spawn = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
-        pose = Pose()
-        pose.position.z = 1.0
-        pose.orientation.w = 1.0
-        response = spawn('box', BOX, 'box', pose, '')
-        self.assertTrue(response.success, response.status_message)
-        self.lock = threading.Lock()
+        super().setUp()
+        self.spawn('box', BOX, 1.0)
         self.truths = []
         self.sub = rospy.Subscriber('/box/truth', Odometry, self.store, queue_size=2000)
 
     def store(self, msg):
         with self.lock:
             self.truths.append(msg)
-
-    def wait_for_connection(self, topic_object):
-        deadline = time.monotonic() + TIMEOUT_S
-        while topic_object.get_num_connections() == 0:
-            self.assertLess(time.monotonic(), deadline, 'no connection')
-            time.sleep(0.02)
 
     def test_force_pushes_the_box_and_p3d_reports_it(self):
         push = rospy.Publisher('/box/push', Wrench, queue_size=1, latch=True)

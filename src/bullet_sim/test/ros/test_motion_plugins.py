@@ -9,18 +9,15 @@ alone at 50 Hz. 1000 steps of 1 ms then give 20 odometry messages, odom -> base_
 on /tf with each, and 50 joint states that name `spin` only.
 """
 import math
-import threading
 import time
-import unittest
 
 import rospy
 import rostest
-from bullet_sim.srv import StepSimulation
-from gazebo_msgs.srv import SpawnModel
-from geometry_msgs.msg import Pose, Twist
+from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 from tf2_msgs.msg import TFMessage
+from spawned_model_test import TIMEOUT_S, SpawnedModelTest
 
 INERTIA = '<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>'
 ROTOR = """<link name="{0}_rotor"><inertial><mass value="0.1"/>{1}</inertial></link>
@@ -34,23 +31,14 @@ BOT = ('<robot name="bot"><link name="body"><inertial><mass value="2"/>' + INERT
 <plugin name="joints" filename="libgazebo_ros_joint_state_publisher.so">
 <jointName>spin</jointName><updateRate>50</updateRate></plugin></gazebo></robot>""")
 YAW = 0.5
-TIMEOUT_S = 30.0
 
 
-class MotionPlugins(unittest.TestCase):
+class MotionPlugins(SpawnedModelTest):
+    node_name = 'motion_plugins_test'
+
     def setUp(self):
-        rospy.init_node('motion_plugins_test')
-        for name in ('/gazebo/spawn_urdf_model', '/gazebo/step_simulation'):
-            rospy.wait_for_service(name, TIMEOUT_S)
-        self.step = rospy.ServiceProxy('/gazebo/step_simulation', StepSimulation)
-        spawn = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
-        pose = Pose()
-        pose.position.z = 1.0
-        pose.orientation.z = math.sin(YAW / 2)
-        pose.orientation.w = math.cos(YAW / 2)
-        response = spawn('bot', BOT, 'bot', pose, '')
-        self.assertTrue(response.success, response.status_message)
-        self.lock = threading.Lock()
+        super().setUp()
+        self.spawn('bot', BOT, 1.0, YAW)
         self.odoms, self.joints, self.tfs = [], [], []
         self.subs = [
             rospy.Subscriber('/bot/odom', Odometry, self.keep(self.odoms), queue_size=1000),
@@ -63,12 +51,6 @@ class MotionPlugins(unittest.TestCase):
             with self.lock:
                 into.append(msg)
         return store
-
-    def wait_for_connection(self, topic_object):
-        deadline = time.monotonic() + TIMEOUT_S
-        while topic_object.get_num_connections() == 0:
-            self.assertLess(time.monotonic(), deadline, 'no connection')
-            time.sleep(0.02)
 
     def test_planar_move_and_joint_states(self):
         command = rospy.Publisher('/bot/cmd_vel', Twist, queue_size=1, latch=True)

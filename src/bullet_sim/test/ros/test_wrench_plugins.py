@@ -9,15 +9,12 @@ the bob's frame: force (0, 0, -m g) = (0, 0, -19.6) N and torque about the joint
 (topic /pendulum/push); the f3d on the stand (topic /pendulum/f3d, frameName base) reads
 that push alone, in world axes: not the stand's weight, not the ground's support.
 """
-import threading
 import time
-import unittest
 
 import rospy
 import rostest
-from bullet_sim.srv import StepSimulation
-from gazebo_msgs.srv import SpawnModel
-from geometry_msgs.msg import Pose, Wrench, WrenchStamped
+from geometry_msgs.msg import Wrench, WrenchStamped
+from spawned_model_test import TIMEOUT_S, SpawnedModelTest
 
 PENDULUM = """<robot name="pendulum">
 <link name="base"><inertial><mass value="50"/>
@@ -33,22 +30,14 @@ PENDULUM = """<robot name="pendulum">
 <topicName>f3d</topicName><frameName>base</frameName></plugin>
 <plugin name="push" filename="libgazebo_ros_force.so"><bodyName>base</bodyName>
 <topicName>push</topicName></plugin></gazebo></robot>"""
-TIMEOUT_S = 30.0
 
 
-class WrenchPlugins(unittest.TestCase):
+class WrenchPlugins(SpawnedModelTest):
+    node_name = 'wrench_plugins_test'
+
     def setUp(self):
-        rospy.init_node('wrench_plugins_test')
-        for name in ('/gazebo/spawn_urdf_model', '/gazebo/step_simulation'):
-            rospy.wait_for_service(name, TIMEOUT_S)
-        self.step = rospy.ServiceProxy('/gazebo/step_simulation', StepSimulation)
-        spawn = rospy.ServiceProxy('/gazebo/spawn_urdf_model', SpawnModel)
-        pose = Pose()
-        pose.position.z = 0.05
-        pose.orientation.w = 1.0
-        response = spawn('pendulum', PENDULUM, 'pendulum', pose, '')
-        self.assertTrue(response.success, response.status_message)
-        self.lock = threading.Lock()
+        super().setUp()
+        self.spawn('pendulum', PENDULUM, 0.05)
         self.messages = {'ft': [], 'f3d': []}
         self.subs = [rospy.Subscriber('/pendulum/' + topic, WrenchStamped, self.store,
                                       callback_args=topic, queue_size=5000)
@@ -57,12 +46,6 @@ class WrenchPlugins(unittest.TestCase):
     def store(self, msg, topic):
         with self.lock:
             self.messages[topic].append(msg)
-
-    def wait_for_connection(self, topic_object):
-        deadline = time.monotonic() + TIMEOUT_S
-        while topic_object.get_num_connections() == 0:
-            self.assertLess(time.monotonic(), deadline, 'no connection')
-            time.sleep(0.02)
 
     def wait_for(self, topic, count):
         deadline = time.monotonic() + TIMEOUT_S
