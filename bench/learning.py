@@ -6,7 +6,8 @@ real-time factor 1) and a MuJoCo Gymnasium environment (Ant-v5) on the same mach
 
 Medians of N rounds (default 3), each figure measured in a process of its own:
   single   one environment in one thread, physics_step 1 ms and 5 ms: steps/s and steps
-           per CPU second (time.process_time of the process)
+           per CPU second (time.process_time of the process); then the median cost of
+           100 resets and of 20 seeded ones (which build the simulation anew)
   vector   TurtleBot3GoalVectorEnv with 1, 2, 4 simulations in one process (threads =
            min(N, cores)): total agent steps/s
   ray      2 Ray workers through bullet_sim.batch (build/learning_venv's Python; skipped
@@ -68,7 +69,20 @@ def part_single(physics_step, seconds):
     env = gym.make("bullet_sim/TurtleBot3Goal-v0", physics_step=physics_step)
     env.reset(seed=0)
     n, wall, cpu = timed_loop(env, seconds)
-    return {"steps_per_s": n / wall, "steps_per_cpu_s": n / cpu}
+    # the cost of a reset: the simulation's own (time 0, a new start and goal), and one with
+    # a seed, which builds the simulation anew
+    plain, seeded = [], []
+    for k in range(100):
+        t0 = time.perf_counter()
+        env.reset()
+        plain.append(time.perf_counter() - t0)
+    for k in range(20):
+        t0 = time.perf_counter()
+        env.reset(seed=k)
+        seeded.append(time.perf_counter() - t0)
+    return {"steps_per_s": n / wall, "steps_per_cpu_s": n / cpu,
+            "reset_ms": 1000 * statistics.median(plain),
+            "seeded_reset_ms": 1000 * statistics.median(seeded)}
 
 
 def part_vector(num, seconds):
@@ -233,6 +247,10 @@ def main():
           % (fmt(s1), fmt(c1)))
     print("| one env, one thread, physics 5 ms (40 steps per action) | %s | %s |"
           % (fmt(s5), fmt(c5)))
+    print("| reset (the simulation's own, a new start and goal) / with a seed (the simulation "
+          "built anew), physics 1 ms | %s ms / %s ms | |"
+          % (fmt(med(results["single_1ms"], "reset_ms"), 2),
+             fmt(med(results["single_1ms"], "seeded_reset_ms"), 2)))
     for n in (1, 2, 4):
         v = results["vector_%d" % n]
         print("| vector env, %d simulations, %d threads, physics 1 ms | %s | %s |"
