@@ -60,6 +60,10 @@ class SensorKind(enum.Enum):
     RANGE: int
     BLOCK_LASER: int
     BUMPER: int
+    PLANAR_MOVE_ODOMETRY: int
+    PLUGIN_JOINT_STATES: int
+    F3D: int
+    FORCE_TORQUE: int
 
 
 class DueSensor:

@@ -219,6 +219,10 @@ const char* kindName(SensorKind kind) {
     case SensorKind::Range: return "range";
     case SensorKind::BlockLaser: return "block_laser";
     case SensorKind::Bumper: return "bumper";
+    case SensorKind::PlanarMoveOdometry: return "planar_move_odometry";
+    case SensorKind::PluginJointStates: return "plugin_joint_states";
+    case SensorKind::F3d: return "f3d";
+    case SensorKind::ForceTorque: return "force_torque";
   }
   return "?";
 }
@@ -395,7 +399,11 @@ PYBIND11_MODULE(_core, m) {
       .value("GROUND_TRUTH", SensorKind::GroundTruth)
       .value("RANGE", SensorKind::Range)
       .value("BLOCK_LASER", SensorKind::BlockLaser)
-      .value("BUMPER", SensorKind::Bumper);
+      .value("BUMPER", SensorKind::Bumper)
+      .value("PLANAR_MOVE_ODOMETRY", SensorKind::PlanarMoveOdometry)
+      .value("PLUGIN_JOINT_STATES", SensorKind::PluginJointStates)
+      .value("F3D", SensorKind::F3d)
+      .value("FORCE_TORQUE", SensorKind::ForceTorque);
 
   py::class_<DueSensor>(m, "DueSensor",
                         "A sensor whose update period elapsed: read it with the read_* method "
