@@ -22,7 +22,8 @@ void readLinkSurface(const XMLElement* g, const std::string& link, const XmlValu
   s.mu2 = xml.number(g, "mu2", s.mu2, where);
   s.kp = xml.number(g, "kp", s.kp, where);
   s.kd = xml.number(g, "kd", s.kd, where);
-  for (const auto& [name, mu] : {std::make_pair("mu1", &s.mu1), std::make_pair("mu2", &s.mu2)}) {
+  const std::pair<const char*, double*> coefficients[] = {{"mu1", &s.mu1}, {"mu2", &s.mu2}};
+  for (const auto& [name, mu] : coefficients) {
     if (std::isnan(*mu)) {
       xml.fail(where + " <" + name + ">", "'" + xml.text(g, name, "") + "' is not a friction coefficient");
     }
