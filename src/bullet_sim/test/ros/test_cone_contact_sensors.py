@@ -105,8 +105,12 @@ class ConeContactSensors(unittest.TestCase):
             wait_for(lambda: simulator_connections(NS + topic, "/cone_contact_sensors_test"),
                      "the simulator to see the subscriber")
         self.step(200)
+        # 0.2 s of sim time holds 2 sonar readings (10 Hz), 1 block laser cloud (5 Hz) and 4
+        # bumper states (20 Hz): all of them, delivered, before the last one's number is read
+        expected = {"sonar": 2, "block": 1, "bumps": 4}
         for topic, sub in subs.items():
-            wait_for(lambda: sub.count() >= 1, "a message on " + topic)
+            wait_for(lambda: sub.count() >= expected[topic],
+                     "%d messages on %s" % (expected[topic], topic))
             seqs[topic] = sub.last().header.seq
             sub.sub.unregister()
         for topic in subs:
