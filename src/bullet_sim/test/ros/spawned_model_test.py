@@ -40,3 +40,15 @@ class SpawnedModelTest(unittest.TestCase):
         while topic_object.get_num_connections() == 0:
             self.assertLess(time.monotonic(), deadline, 'no connection')
             time.sleep(0.02)
+
+    def step_until(self, steps, arrived, what):
+        """Steps `steps` at a time until arrived() (read under the lock) is true: a
+        command sent on a topic has reached the simulator once its effect shows."""
+        deadline = time.monotonic() + TIMEOUT_S
+        while True:
+            self.step(steps)
+            time.sleep(0.01)
+            with self.lock:
+                if arrived():
+                    return
+            self.assertLess(time.monotonic(), deadline, what)

@@ -61,15 +61,8 @@ class MotionPlugins(SpawnedModelTest):
         twist.linear.x, twist.linear.y = 0.2, 0.1
         command.publish(twist)
         # The command has arrived when the odometry moves; from then on, 1000 steps.
-        deadline = time.monotonic() + TIMEOUT_S
-        while True:
-            self.step(50)
-            time.sleep(0.05)
-            with self.lock:
-                moving = self.odoms and self.odoms[-1].twist.twist.linear.x > 0.1
-            if moving:
-                break
-            self.assertLess(time.monotonic(), deadline, 'the box never moved')
+        self.step_until(50, lambda: self.odoms and self.odoms[-1].twist.twist.linear.x > 0.1,
+                        'the box never moved')
         with self.lock:
             start = self.odoms[-1]
         self.step(1000)

@@ -64,15 +64,9 @@ class WrenchPlugins(SpawnedModelTest):
         wrench.force.z = -10.0
         push.publish(wrench)
         # The push has arrived when the f3d reads it; then 1 s of settled readings.
-        deadline = time.monotonic() + TIMEOUT_S
-        while True:
-            self.step(1)
-            time.sleep(0.01)
-            with self.lock:
-                pushed = self.messages['f3d'] and self.messages['f3d'][-1].wrench.force.z < 0
-            if pushed:
-                break
-            self.assertLess(time.monotonic(), deadline, 'the f3d never read the push')
+        self.step_until(
+            1, lambda: self.messages['f3d'] and self.messages['f3d'][-1].wrench.force.z < 0,
+            'the f3d never read the push')
         self.step(500)
         self.wait_for('ft', 50)
         time.sleep(0.2)
